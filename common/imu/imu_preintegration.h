@@ -1,0 +1,90 @@
+// ImuPreintegration: on-manifold preintegration of IMU samples between two epochs (Forster et al.
+// 2017), its covariance and bias Jacobians, and the residual between two NavStates.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "common/imu/imu_sample.h"
+#include "common/imu/nav_state.h"
+#include "common/io/dataset_description.h"
+#include "common/math/so3.h"
+
+namespace giocal {
+
+/// Residual and covariance order of the IMU factor: [r_p, r_theta, r_v, r_ba, r_bg].
+namespace imu_index {
+constexpr int kP = 0, kR = 3, kV = 6, kBa = 9, kBg = 12, kSize = 15;
+}
+
+/// The residual of two states against one preintegration, and the Jacobians with respect to the
+/// right-perturbed states: p, theta (q * Exp(theta)), v, b_a, b_g of state i and of state j.
+struct ImuResidual {
+  Eigen::Matrix<double, 15, 1> r;
+  Eigen::Matrix<double, 15, 3> J_p_i, J_q_i, J_v_i, J_ba_i, J_bg_i;
+  Eigen::Matrix<double, 15, 3> J_p_j, J_q_j, J_v_j, J_ba_j, J_bg_j;
+};
+
+class ImuPreintegration {
+ public:
+  /// gravity_n and omega_ie_n come from the LocalFrame; biases are the linearization point.
+  ImuPreintegration(const ImuNoise& noise, const Eigen::Vector3d& gravity_n,
+                    const Eigen::Vector3d& omega_ie_n, const Eigen::Vector3d& b_a,
+                    const Eigen::Vector3d& b_g);
+
+  /// Adds a step of dt seconds over which rate and specific force are constant (the caller passes
+  /// the mean of the two bounding samples). The mean is exact for constant inputs.
+  void integrate(double dt, const Eigen::Vector3d& gyro, const Eigen::Vector3d& acc);
+
+  /// Integrates the samples covering [t0, t1], interpolating linearly at both ends.
+  void integrateSamples(const std::vector<ImuSample>& samples, double t0, double t1);
+
+  /// Integrates again from the stored steps with new bias linearization points.
+  void repropagate(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g);
+
+  double dt() const { return dt_sum_; }
+  const Mat3& deltaR() const { return dR_; }
+  const Vec3& deltaV() const { return dv_; }
+  const Vec3& deltaP() const { return dp_; }
+  const Eigen::Vector3d& linBa() const { return b_a_lin_; }
+  const Eigen::Vector3d& linBg() const { return b_g_lin_; }
+  /// Covariance of the residual [p, theta, v, b_a, b_g] (15x15).
+  const Eigen::Matrix<double, 15, 15>& covariance() const { return cov_; }
+  /// d(dp, dtheta, dv)/d(b_a, b_g): rows [p, theta, v], columns [b_a, b_g].
+  const Eigen::Matrix<double, 9, 6>& biasJacobian() const { return J_bias_; }
+
+  /// Deltas corrected to first order for biases that differ from the linearization point.
+  Mat3 correctedDeltaR(const Eigen::Vector3d& b_g) const;
+  Vec3 correctedDeltaV(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g) const;
+  Vec3 correctedDeltaP(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g) const;
+
+  /// The state j this preintegration predicts from state i (biases carried over).
+  NavState predict(const NavState& i) const;
+
+  /// Residual between states i and j with all Jacobians (see ImuResidual).
+  ImuResidual evaluate(const NavState& i, const NavState& j) const;
+
+ private:
+  struct Step {
+    double dt;
+    Eigen::Vector3d gyro, acc;
+  };
+  void reset();
+  void addStep(const Step& s);
+
+  ImuNoise noise_;
+  Eigen::Vector3d g_n_, w_ie_n_;
+  Eigen::Vector3d b_a_lin_, b_g_lin_;
+  std::vector<Step> steps_;
+
+  double dt_sum_ = 0.0;
+  Mat3 dR_;
+  Vec3 dv_, dp_;
+  // First moments in time of the rotated specific force, for the Earth-rotation terms:
+  // dv_t = int t dR a dt, dp_t = int int t dR a dt dt.
+  Vec3 dv_t_, dp_t_;
+  Eigen::Matrix<double, 15, 15> cov_;
+  Eigen::Matrix<double, 9, 6> J_bias_;
+};
+
+}  // namespace giocal

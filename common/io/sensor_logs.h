@@ -1,0 +1,35 @@
+// Readers and writers of the dataset's sensor logs: imu.csv, odom.csv, truth.csv.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "common/imu/imu_sample.h"
+#include "common/odometer/odom_sample.h"
+
+namespace giocal {
+
+/// One row of truth.csv: IMU origin (degrees, metres), ENU velocity and attitude q_n_b in the
+/// local-level ENU frame at the current position.
+struct TruthSample {
+  double t = 0.0;
+  double lat_deg = 0.0;
+  double lon_deg = 0.0;
+  double h = 0.0;
+  Eigen::Vector3d v_enu = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_n_b = Eigen::Quaterniond::Identity();
+};
+
+std::vector<ImuSample> readImuCsv(const std::string& path);
+void writeImuCsv(const std::string& path, const std::vector<ImuSample>& samples);
+
+std::vector<OdomSample> readOdomCsv(const std::string& path);
+void writeOdomCsv(const std::string& path, const std::vector<OdomSample>& samples);
+
+/// Quaternions must have unit norm within 1e-3 and are normalized on reading.
+std::vector<TruthSample> readTruthCsv(const std::string& path);
+void writeTruthCsv(const std::string& path, const std::vector<TruthSample>& samples);
+
+}  // namespace giocal

@@ -1,0 +1,154 @@
+#include "common/io/yaml_fields.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/io/data_error.h"
+
+namespace giocal {
+
+namespace {
+std::vector<std::string> splitKey(const std::string& key) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream ss(key);
+  while (std::getline(ss, part, '.')) parts.push_back(part);
+  return parts;
+}
+}  // namespace
+
+YamlFields::YamlFields(const std::string& path) : path_(path) {
+  try {
+    root_ = YAML::LoadFile(path);
+  } catch (const YAML::BadFile&) {
+    throw DataError(path, 0, "cannot open file");
+  } catch (const YAML::Exception& e) {
+    throw DataError(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
+  }
+  if (!root_.IsMap()) throw DataError(path, 1, "expected a YAML mapping at the top level");
+}
+
+YamlFields::YamlFields(const std::string& path, YAML::Node root) : path_(path), root_(root) {}
+
+long YamlFields::lineOf(const YAML::Node& node) const {
+  return node.Mark().line >= 0 ? node.Mark().line + 1 : 0;
+}
+
+void YamlFields::fail(const std::string& key, const std::string& problem) const {
+  long line = 0;
+  if (has(key)) line = lineOf(find(key));
+  throw DataError(path_, line, "'" + key + "': " + problem);
+}
+
+YAML::Node YamlFields::find(const std::string& key) const {
+  // yaml-cpp's operator[] on a const node never inserts, but reassigning a Node rebinds it in
+  // place, so walk with fresh copies.
+  std::vector<YAML::Node> chain{root_};
+  for (const auto& part : splitKey(key)) {
+    const YAML::Node& cur = chain.back();
+    if (!cur.IsMap() || !cur[part]) {
+      throw DataError(path_, lineOf(cur), "missing key '" + key + "'");
+    }
+    chain.push_back(cur[part]);
+  }
+  return chain.back();
+}
+
+bool YamlFields::has(const std::string& key) const {
+  std::vector<YAML::Node> chain{root_};
+  for (const auto& part : splitKey(key)) {
+    const YAML::Node& cur = chain.back();
+    if (!cur.IsMap() || !cur[part]) return false;
+    chain.push_back(cur[part]);
+  }
+  return !chain.back().IsNull();
+}
+
+double YamlFields::number(const std::string& key) const {
+  const YAML::Node node = find(key);
+  double v = 0.0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, v)) {
+    throw DataError(path_, lineOf(node), "'" + key + "' must be a number");
+  }
+  if (!std::isfinite(v)) throw DataError(path_, lineOf(node), "'" + key + "' is not finite");
+  return v;
+}
+
+double YamlFields::number(const std::string& key, double min, double max) const {
+  const double v = number(key);
+  if (v < min || v > max) {
+    std::ostringstream msg;
+    msg << "value " << v << " outside [" << min << ", " << max << "]";
+    fail(key, msg.str());
+  }
+  return v;
+}
+
+double YamlFields::numberOr(const std::string& key, double fallback, double min,
+                            double max) const {
+  return has(key) ? number(key, min, max) : fallback;
+}
+
+std::string YamlFields::text(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsScalar()) throw DataError(path_, lineOf(node), "'" + key + "' must be a string");
+  return node.as<std::string>();
+}
+
+std::string YamlFields::textOr(const std::string& key, const std::string& fallback) const {
+  return has(key) ? text(key) : fallback;
+}
+
+std::vector<std::string> YamlFields::textList(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (node.IsScalar()) return {node.as<std::string>()};
+  if (!node.IsSequence() || node.size() == 0) {
+    throw DataError(path_, lineOf(node), "'" + key + "' must be a string or a list of strings");
+  }
+  std::vector<std::string> out;
+  for (const auto& item : node) {
+    if (!item.IsScalar()) throw DataError(path_, lineOf(item), "'" + key + "' items must be strings");
+    out.push_back(item.as<std::string>());
+  }
+  return out;
+}
+
+Eigen::Vector4d YamlFields::vector4(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsSequence() || node.size() != 4) {
+    throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 4 numbers");
+  }
+  Eigen::Vector4d v;
+  for (int i = 0; i < 4; ++i) {
+    if (!YAML::convert<double>::decode(node[i], v[i]) || !std::isfinite(v[i])) {
+      throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 4 finite numbers");
+    }
+  }
+  return v;
+}
+
+Eigen::Vector3d YamlFields::vector3(const std::string& key) const {
+  const YAML::Node node = find(key);
+  if (!node.IsSequence() || node.size() != 3) {
+    throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 3 numbers");
+  }
+  Eigen::Vector3d v;
+  for (int i = 0; i < 3; ++i) {
+    if (!YAML::convert<double>::decode(node[i], v[i]) || !std::isfinite(v[i])) {
+      throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 3 finite numbers");
+    }
+  }
+  return v;
+}
+
+Eigen::Vector3d YamlFields::vector3(const std::string& key, double min, double max) const {
+  const Eigen::Vector3d v = vector3(key);
+  if (v.minCoeff() < min || v.maxCoeff() > max) {
+    std::ostringstream msg;
+    msg << "values outside [" << min << ", " << max << "]";
+    fail(key, msg.str());
+  }
+  return v;
+}
+
+}  // namespace giocal

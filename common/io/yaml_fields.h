@@ -1,0 +1,45 @@
+// YamlFields: typed, checked access to the keys of a YAML file, with "file:line: problem" errors.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace giocal {
+
+class YamlFields {
+ public:
+  /// Loads `path`; throws DataError on a missing file or a YAML syntax error.
+  explicit YamlFields(const std::string& path);
+  /// Wraps an already parsed node (for tests and nested documents).
+  YamlFields(const std::string& path, YAML::Node root);
+
+  const YAML::Node& root() const { return root_; }
+  const std::string& path() const { return path_; }
+
+  /// `key` is a dotted path such as "imu.gyro_noise_density".
+  bool has(const std::string& key) const;
+  double number(const std::string& key) const;
+  /// A number within [min, max]; the range names the physical limits of the field.
+  double number(const std::string& key, double min, double max) const;
+  double numberOr(const std::string& key, double fallback, double min, double max) const;
+  std::string text(const std::string& key) const;
+  std::string textOr(const std::string& key, const std::string& fallback) const;
+  std::vector<std::string> textList(const std::string& key) const;
+  Eigen::Vector3d vector3(const std::string& key) const;
+  Eigen::Vector3d vector3(const std::string& key, double min, double max) const;
+  Eigen::Vector4d vector4(const std::string& key) const;
+
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+
+ private:
+  YAML::Node find(const std::string& key) const;  // throws when missing
+  long lineOf(const YAML::Node& node) const;
+
+  std::string path_;
+  YAML::Node root_;
+};
+
+}  // namespace giocal

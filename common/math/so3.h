@@ -1,0 +1,31 @@
+// SO(3) operations on rotation matrices: skew, Exp/Log and the right Jacobians.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace giocal {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Quat = Eigen::Quaterniond;
+
+/// [v]x, the matrix with skew(a) * b = a x b.
+Mat3 skew(const Vec3& v);
+
+/// Rotation matrix of the rotation vector phi (axis times angle in radians).
+Mat3 expSO3(const Vec3& phi);
+
+/// Rotation vector of R, angle in [0, pi].
+Vec3 logSO3(const Mat3& R);
+
+/// Right Jacobian: Exp(phi + d) ~= Exp(phi) Exp(Jr(phi) d).
+Mat3 rightJacobianSO3(const Vec3& phi);
+
+/// Inverse of the right Jacobian: Log(Exp(phi) Exp(d)) ~= phi + Jr^-1(phi) d.
+Mat3 rightJacobianInvSO3(const Vec3& phi);
+
+/// Projects a nearly orthonormal matrix back onto SO(3) (keeps long integrations exact).
+Mat3 normalizeRotation(const Mat3& R);
+
+}  // namespace giocal
