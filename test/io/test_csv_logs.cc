@@ -1,0 +1,134 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "common/io/data_error.h"
+#include "common/io/sensor_logs.h"
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+// Expects `fn` to throw a DataError whose message names the file, the line and contains `what`.
+template <typename Fn>
+void expectDataError(Fn fn, const std::string& file, long line, const std::string& what) {
+  try {
+    fn();
+    FAIL() << "no error for " << what;
+  } catch (const DataError& e) {
+    EXPECT_EQ(e.file(), file);
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "message must be one line";
+  }
+}
+
+const std::string kImuHeader = "t,wx,wy,wz,ax,ay,az\n";
+
+TEST(ImuCsv, RoundTrip) {
+  test::TempDir dir;
+  std::vector<ImuSample> s(3);
+  for (int k = 0; k < 3; ++k) {
+    s[k].t = 1.4e9 + 0.01 * k;
+    s[k].gyro = {0.1 * k, -0.2, 1.0 / 3.0};
+    s[k].acc = {0.0, 0.1, 9.80665 + k};
+  }
+  writeImuCsv(dir.file("imu.csv"), s);
+  const auto back = readImuCsv(dir.file("imu.csv"));
+  ASSERT_EQ(back.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(back[k].t, s[k].t);
+    EXPECT_EQ(back[k].gyro, s[k].gyro);
+    EXPECT_EQ(back[k].acc, s[k].acc);
+  }
+  // No temporary file is left beside the output.
+  int files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) files += e.is_regular_file();
+  EXPECT_EQ(files, 1);
+}
+
+TEST(ImuCsv, RejectsBadInputWithFileAndLine) {
+  test::TempDir dir;
+  const std::string ok = "1.0,0,0,0,0,0,9.8\n";
+  struct Case {
+    std::string content;
+    long line;
+    std::string what;
+  };
+  const std::vector<Case> cases{
+      {"", 0, "header missing"},
+      {"t,wx,wy,wz,ax,ay\n" + ok, 1, "header must be"},
+      {kImuHeader + ok + "2.0,0,0,0,0,9.8\n", 3, "expected 7 columns, found 6"},
+      {kImuHeader + ok + "2.0,0,0,0,0,0,9.8,1\n", 3, "expected 7 columns, found 8"},
+      {kImuHeader + ok + "2.0,nan,0,0,0,0,9.8\n", 3, "not finite"},
+      {kImuHeader + ok + "2.0,0,inf,0,0,0,9.8\n", 3, "not finite"},
+      {kImuHeader + ok + "2.0,0,0,abc,0,0,9.8\n", 3, "not a number"},
+      {kImuHeader + ok + "2.0,0,0,,0,0,9.8\n", 3, "not a number"},
+      {kImuHeader + ok + "1.0,0,0,0,0,0,9.8\n", 3, "duplicated time"},
+      {kImuHeader + ok + "0.5,0,0,0,0,0,9.8\n", 3, "time goes backwards"},
+      {kImuHeader + ok + "2.0,100,0,0,0,0,9.8\n", 3, "outside the physical range"},
+      {kImuHeader + ok + "2.0,0,0,0,0,0,9800\n", 3, "outside the physical range"},
+      {kImuHeader + "-5,0,0,0,0,0,9.8\n", 2, "outside the physical range"},
+  };
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const std::string path = dir.write("imu" + std::to_string(i) + ".csv", cases[i].content);
+    expectDataError([&] { readImuCsv(path); }, path, cases[i].line, cases[i].what);
+  }
+  expectDataError([&] { readImuCsv(dir.file("missing.csv")); }, dir.file("missing.csv"), 0,
+                  "cannot open");
+}
+
+TEST(ImuCsv, TruncatedLastLineIsReported) {
+  test::TempDir dir;
+  const std::string path = dir.write("imu.csv", kImuHeader + "1.0,0,0,0,0,0,9.8\n2.0,0,0,0.1");
+  expectDataError([&] { readImuCsv(path); }, path, 3, "expected 7 columns");
+}
+
+TEST(ImuCsv, SkipsCommentsAndBlankLines) {
+  test::TempDir dir;
+  const std::string path =
+      dir.write("imu.csv", "# recorded by a test\n" + kImuHeader + "\n1.0,0,0,0,0,0,9.8\r\n");
+  EXPECT_EQ(readImuCsv(path).size(), 1u);
+}
+
+TEST(OdomCsv, RoundTripAndBadInput) {
+  test::TempDir dir;
+  writeOdomCsv(dir.file("odom.csv"), {{10.0, 0.5, 0.1}, {10.04, 0.6, -0.1}});
+  const auto back = readOdomCsv(dir.file("odom.csv"));
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].v, 0.6);
+  EXPECT_EQ(back[1].w, -0.1);
+  const std::string h = "t,v,w\n";
+  const auto p1 = dir.write("a.csv", h + "1,0.1,0\n1,0.1,0\n");
+  expectDataError([&] { readOdomCsv(p1); }, p1, 3, "duplicated time");
+  const auto p2 = dir.write("b.csv", h + "1,70,0\n");
+  expectDataError([&] { readOdomCsv(p2); }, p2, 2, "'v' value 70");
+  const auto p3 = dir.write("c.csv", h + "1,0.1\n");
+  expectDataError([&] { readOdomCsv(p3); }, p3, 2, "expected 3 columns");
+  const auto p4 = dir.write("d.csv", "t,v,yaw\n1,0.1,0\n");
+  expectDataError([&] { readOdomCsv(p4); }, p4, 1, "header must be 't,v,w'");
+}
+
+TEST(TruthCsv, RoundTripAndBadInput) {
+  test::TempDir dir;
+  TruthSample s;
+  s.t = 1e9;
+  s.lat_deg = 35.1;
+  s.lon_deg = 136.9;
+  s.h = 50.0;
+  s.v_enu = {1.0, -0.5, 0.01};
+  s.q_n_b = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  writeTruthCsv(dir.file("truth.csv"), {s});
+  const auto back = readTruthCsv(dir.file("truth.csv"));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].lat_deg, 35.1);
+  EXPECT_LT(back[0].q_n_b.angularDistance(s.q_n_b), 1e-12);
+  const std::string h = "t,lat,lon,h,ve,vn,vu,qw,qx,qy,qz\n";
+  const auto p1 = dir.write("a.csv", h + "1,95,0,0,0,0,0,1,0,0,0\n");
+  expectDataError([&] { readTruthCsv(p1); }, p1, 2, "'lat' value 95");
+  const auto p2 = dir.write("b.csv", h + "1,35,0,0,0,0,0,0.5,0,0,0\n");
+  expectDataError([&] { readTruthCsv(p2); }, p2, 2, "not of unit norm");
+}
+
+}  // namespace
+}  // namespace giocal
