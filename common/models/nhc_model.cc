@@ -1,0 +1,33 @@
+#include "common/models/nhc_model.h"
+
+#include "common/models/block_values.h"
+#include "common/odometer/vehicle_velocity.h"
+
+namespace giocal {
+
+const std::vector<StateBlock>& NhcModel::blocks() const {
+  static const std::vector<StateBlock> kBlocks{vectorBlock(block::kV), rotationBlock(block::kQ),
+                                               vectorBlock(block::kBg), vectorBlock(block::kPbm),
+                                               rotationBlock(block::kQbm)};
+  return kBlocks;
+}
+
+void NhcModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
+                        std::vector<Eigen::MatrixXd>* jacobians) const {
+  const VehicleVelocity vv = vehicleVelocity(vec3At(params[0]), quatAt(params[1]), gyro_,
+                                             vec3At(params[2]), vec3At(params[3]), quatAt(params[4]));
+  // Rows x (lateral) and z (vertical) of the vehicle velocity.
+  Eigen::Matrix<double, 2, 3> S;
+  S << 1, 0, 0, 0, 0, 1;
+  residual = S * vv.v_m;
+  if (jacobians) {
+    *jacobians = {S * vv.dv_dv_n, S * vv.dv_dq_n_b, S * vv.dv_dbg, S * vv.dv_dp_b_m,
+                  S * vv.dv_dq_b_m};
+  }
+}
+
+Eigen::MatrixXd NhcModel::covariance() const {
+  return Eigen::Matrix2d::Identity() * sigma_ * sigma_;
+}
+
+}  // namespace giocal

@@ -1,0 +1,42 @@
+#include "fgo/model_cost_function.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <stdexcept>
+
+namespace giocal {
+
+ModelCostFunction::ModelCostFunction(std::shared_ptr<const MeasurementModel> model)
+    : model_(std::move(model)) {
+  set_num_residuals(model_->residualSize());
+  for (const auto& b : model_->blocks()) mutable_parameter_block_sizes()->push_back(b.ambientSize());
+  const Eigen::MatrixXd info = model_->covariance().inverse();
+  const Eigen::LLT<Eigen::MatrixXd> llt(info);
+  if (llt.info() != Eigen::Success || !info.allFinite()) {
+    throw std::invalid_argument(model_->name() + ": covariance is not positive definite");
+  }
+  sqrt_info_ = llt.matrixU();
+}
+
+bool ModelCostFunction::Evaluate(const double* const* parameters, double* residuals,
+                                 double** jacobians) const {
+  Eigen::VectorXd r;
+  std::vector<Eigen::MatrixXd> J;
+  model_->evaluate(parameters, r, jacobians ? &J : nullptr);
+  const int m = model_->residualSize();
+  Eigen::Map<Eigen::VectorXd>(residuals, m) = sqrt_info_ * r;
+  if (!r.allFinite()) return false;
+  if (!jacobians) return true;
+  const auto& blocks = model_->blocks();
+  for (size_t k = 0; k < blocks.size(); ++k) {
+    if (!jacobians[k]) continue;
+    const int ambient = blocks[k].ambientSize(), tangent = blocks[k].tangentSize();
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(
+        jacobians[k], m, ambient);
+    out.setZero();
+    out.leftCols(tangent) = sqrt_info_ * J[k];
+  }
+  return true;
+}
+
+}  // namespace giocal

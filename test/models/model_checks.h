@@ -1,0 +1,55 @@
+// Generic checks of a MeasurementModel: Jacobians against numeric differentiation in the tangent
+// space of each block.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "common/math/rotation.h"
+#include "common/models/measurement_model.h"
+#include "numeric_jacobian.h"
+
+namespace giocal::test {
+
+/// values[k] holds block k's ambient values.
+inline std::vector<const double*> pointers(const std::vector<Eigen::VectorXd>& values) {
+  std::vector<const double*> p;
+  for (const auto& v : values) p.push_back(v.data());
+  return p;
+}
+
+/// Block value plus a tangent perturbation.
+inline Eigen::VectorXd perturbBlock(const StateBlock& b, const Eigen::VectorXd& x,
+                                    const Eigen::VectorXd& d) {
+  if (b.kind == BlockKind::kVector) return x + d;
+  Eigen::VectorXd out(4);
+  quatToWxyz(boxPlus(quatFromWxyz(x.data()), Eigen::Vector3d(d)), out.data());
+  return out;
+}
+
+inline void expectJacobiansMatchNumeric(const MeasurementModel& model,
+                                        const std::vector<Eigen::VectorXd>& values, double tol) {
+  Eigen::VectorXd r;
+  std::vector<Eigen::MatrixXd> J;
+  model.evaluate(pointers(values).data(), r, &J);
+  ASSERT_EQ(r.size(), model.residualSize());
+  ASSERT_EQ(J.size(), model.blocks().size());
+  for (size_t k = 0; k < model.blocks().size(); ++k) {
+    const StateBlock& b = model.blocks()[k];
+    ASSERT_EQ(J[k].rows(), model.residualSize()) << b.name;
+    ASSERT_EQ(J[k].cols(), b.tangentSize()) << b.name;
+    const auto f = [&](const Eigen::VectorXd& d) -> Eigen::VectorXd {
+      std::vector<Eigen::VectorXd> v = values;
+      v[k] = perturbBlock(b, values[k], d);
+      Eigen::VectorXd out;
+      model.evaluate(pointers(v).data(), out, nullptr);
+      return out;
+    };
+    EXPECT_LT(relativeDifference(J[k], numericJacobian(f, b.tangentSize())), tol)
+        << model.name() << " block " << b.name;
+  }
+}
+
+}  // namespace giocal::test

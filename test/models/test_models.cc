@@ -1,0 +1,266 @@
+#include <gtest/gtest.h>
+
+#include <ceres/ceres.h>
+
+#include <Eigen/LU>
+
+#include <memory>
+#include <random>
+
+#include "common/geodesy/wgs84.h"
+#include "common/models/imu_preintegration_model.h"
+#include "common/models/nhc_model.h"
+#include "common/models/odometer_preintegration_model.h"
+#include "common/models/odometer_velocity_model.h"
+#include "common/models/prior_model.h"
+#include "common/models/zupt_model.h"
+#include "ekf/kalman_update.h"
+#include "ekf/measurement_rows.h"
+#include "fgo/model_cost_function.h"
+#include "fgo/right_quaternion_manifold.h"
+#include "model_checks.h"
+
+namespace giocal {
+namespace {
+
+std::mt19937 rng(31);
+
+Eigen::VectorXd randomBlockValue(const StateBlock& b, double scale) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  if (b.kind == BlockKind::kRotation) {
+    Eigen::VectorXd q(4);
+    quatToWxyz(Quat(expSO3(Vec3(u(rng), u(rng), u(rng)))), q.data());
+    return q;
+  }
+  Eigen::VectorXd v(b.size);
+  for (int i = 0; i < b.size; ++i) v[i] = u(rng);
+  return v;
+}
+
+std::vector<Eigen::VectorXd> randomValues(const MeasurementModel& m) {
+  std::vector<Eigen::VectorXd> values;
+  for (const auto& b : m.blocks()) {
+    // Scale factors stay small, biases small, everything else of ground-robot magnitude.
+    double scale = 1.0;
+    if (b.name.rfind("s_", 0) == 0) scale = 0.05;
+    if (b.name.rfind("b_", 0) == 0) scale = 0.02;
+    values.push_back(randomBlockValue(b, scale));
+  }
+  return values;
+}
+
+std::vector<std::shared_ptr<MeasurementModel>> allModels() {
+  const LocalFrame frame(ecefFromGeodetic({0.6, 2.4, 30}));
+  auto imu = std::make_shared<ImuPreintegration>(ImuNoise{}, frame.gravity_n(), frame.omega_ie_n(),
+                                                 Vec3(0.01, 0, 0), Vec3(0, 0.001, 0));
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int k = 0; k < 30; ++k) {
+    imu->integrate(0.01, Vec3(u(rng), u(rng), u(rng)), Vec3(u(rng), u(rng), 9.8 + u(rng)));
+  }
+  auto odo = std::make_shared<OdometerPreintegration>(OdometerPreintegrationNoise{}, 0.01, -0.01);
+  for (int k = 0; k < 30; ++k) odo->integrate(0.02, 1.0 + 0.3 * u(rng), 0.5 * u(rng));
+  const std::vector<StateBlock> prior_blocks{vectorBlock(block::kSv, 1), vectorBlock(block::kPbm),
+                                             rotationBlock(block::kQbm)};
+  Eigen::VectorXd mean(8);
+  mean << 0.01, 0.1, 0.2, 0.3, 1, 0, 0, 0;
+  return {std::make_shared<ZuptModel>(0.01),
+          std::make_shared<NhcModel>(Vec3(0.1, -0.2, 0.5), 0.05),
+          std::make_shared<OdometerVelocityModel>(OdomSample{0.0, 1.2, 0.3}, Vec3(0.1, -0.2, 0.5),
+                                                  0.01, 0.017),
+          std::make_shared<ImuPreintegrationModel>(imu),
+          std::make_shared<OdometerPreintegrationModel>(odo),
+          std::make_shared<PriorModel>(prior_blocks, mean, Eigen::MatrixXd::Identity(7, 7) * 0.01)};
+}
+
+TEST(MeasurementModels, EveryJacobianMatchesNumericDifferentiation) {
+  for (const auto& model : allModels()) {
+    for (int trial = 0; trial < 10; ++trial) {
+      test::expectJacobiansMatchNumeric(*model, randomValues(*model), 1e-6);
+    }
+    // Covariances are symmetric positive definite.
+    const Eigen::MatrixXd C = model->covariance();
+    ASSERT_EQ(C.rows(), model->residualSize()) << model->name();
+    EXPECT_LT((C - C.transpose()).norm(), 1e-15) << model->name();
+    EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(C).info(), Eigen::Success) << model->name();
+  }
+}
+
+TEST(MeasurementModels, FilterRowsAreTheModelJacobiansAtTheStateOffsets) {
+  for (const auto& model : allModels()) {
+    const auto values = randomValues(*model);
+    std::vector<BlockBinding> bindings;
+    int offset = 2;  // some unrelated states first
+    for (size_t k = 0; k < values.size(); ++k) {
+      // Every third block is held fixed by the filter and must leave no columns.
+      const bool fixed = k % 3 == 2;
+      bindings.push_back({values[k].data(), fixed ? -1 : offset});
+      if (!fixed) offset += model->blocks()[k].tangentSize();
+    }
+    const int n = offset + 4;
+    const MeasurementRows rows = linearize(*model, bindings, n);
+    Eigen::VectorXd r;
+    std::vector<Eigen::MatrixXd> J;
+    model->evaluate(test::pointers(values).data(), r, &J);
+    EXPECT_EQ(rows.residual, r);
+    EXPECT_EQ(rows.R, model->covariance());
+    Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(model->residualSize(), n);
+    for (size_t k = 0; k < values.size(); ++k) {
+      if (bindings[k].error_offset >= 0) {
+        expected.middleCols(bindings[k].error_offset, J[k].cols()) = J[k];
+      }
+    }
+    EXPECT_EQ(rows.H, expected) << model->name();
+  }
+}
+
+TEST(MeasurementModels, CeresCostIsTheWhitenedModelWithTangentJacobians) {
+  RightQuaternionManifold manifold;
+  for (const auto& model : allModels()) {
+    const auto values = randomValues(*model);
+    ModelCostFunction cost(model);
+    const auto params = test::pointers(values);
+    const int m = model->residualSize();
+    Eigen::VectorXd residual(m);
+    std::vector<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> J;
+    std::vector<double*> J_ptr;
+    for (const auto& b : model->blocks()) J.emplace_back(m, b.ambientSize());
+    for (auto& j : J) J_ptr.push_back(j.data());
+    ASSERT_TRUE(cost.Evaluate(params.data(), residual.data(), J_ptr.data()));
+    Eigen::VectorXd r;
+    model->evaluate(params.data(), r, nullptr);
+    const Eigen::MatrixXd S = cost.sqrtInformation();
+    EXPECT_LT((S.transpose() * S - model->covariance().inverse()).norm(),
+              1e-9 * model->covariance().inverse().norm());
+    EXPECT_LT((residual - S * r).norm(), 1e-12 * (1.0 + residual.norm()));
+    // Ceres' tangent Jacobian (ambient Jacobian times PlusJacobian) against numeric
+    // differentiation of the cost through the manifold's Plus.
+    for (size_t k = 0; k < values.size(); ++k) {
+      const StateBlock& b = model->blocks()[k];
+      Eigen::MatrixXd tangent = J[k];
+      if (b.kind == BlockKind::kRotation) {
+        Eigen::Matrix<double, 4, 3, Eigen::RowMajor> plus_j;
+        manifold.PlusJacobian(values[k].data(), plus_j.data());
+        tangent = J[k] * plus_j;
+      }
+      const auto f = [&](const Eigen::VectorXd& d) -> Eigen::VectorXd {
+        std::vector<Eigen::VectorXd> v = values;
+        if (b.kind == BlockKind::kRotation) {
+          manifold.Plus(values[k].data(), d.data(), v[k].data());
+        } else {
+          v[k] += d;
+        }
+        Eigen::VectorXd out(m);
+        cost.Evaluate(test::pointers(v).data(), out.data(), nullptr);
+        return out;
+      };
+      EXPECT_LT(test::relativeDifference(tangent, test::numericJacobian(f, b.tangentSize())), 1e-6)
+          << model->name() << " " << b.name;
+    }
+  }
+}
+
+TEST(MeasurementModels, IteratedFilterAndCeresReachTheSameEstimate) {
+  // A prior on the blocks of the odometer velocity model plus one odometer sample: the MAP estimate
+  // from iterated Kalman updates built on linearize() equals Ceres' on ModelCostFunction.
+  const Vec3 gyro(0.02, -0.01, 0.4);
+  auto odo = std::make_shared<OdometerVelocityModel>(OdomSample{0.0, 1.3, 0.35}, gyro, 0.01, 0.005);
+  const auto& blocks = odo->blocks();
+  int n = 0;
+  std::vector<int> offsets;
+  Eigen::VectorXd mean_ambient(0);
+  std::vector<Eigen::VectorXd> x0;
+  for (const auto& b : blocks) {
+    offsets.push_back(n);
+    n += b.tangentSize();
+    Eigen::VectorXd v = randomBlockValue(b, b.size == 1 ? 0.02 : 0.3);
+    if (b.name == block::kV) v = Vec3(0.2, 1.2, 0.0);
+    x0.push_back(v);
+    mean_ambient.conservativeResize(mean_ambient.size() + v.size());
+    mean_ambient.tail(v.size()) = v;
+  }
+  Eigen::VectorXd sd(n);
+  sd << 0.1, 0.1, 0.1, 0.05, 0.05, 0.05, 0.01, 0.01, 0.01, 0.05, 0.05, 0.2, 0.2, 0.2, 0.1, 0.1, 0.1;
+  const Eigen::MatrixXd P0 = sd.cwiseAbs2().asDiagonal();
+  auto prior = std::make_shared<PriorModel>(blocks, mean_ambient, P0);
+
+  // Iterated EKF: relinearize the measurement at the current iterate (Gauss-Newton on the MAP).
+  std::vector<Eigen::VectorXd> x = x0;
+  int iterations = 0;
+  for (; iterations < 500; ++iterations) {
+    std::vector<BlockBinding> bind;
+    for (size_t k = 0; k < x.size(); ++k) bind.push_back({x[k].data(), offsets[k]});
+    MeasurementRows rows = linearize(*odo, bind, n);
+    // IEKF form: the prior re-expressed in the tangent space of the iterate x (through the prior
+    // residual's Jacobian), then one linear update at x.
+    Eigen::VectorXd pr;
+    std::vector<Eigen::MatrixXd> Jp;
+    prior->evaluate(test::pointers(x).data(), pr, &Jp);
+    Eigen::MatrixXd Jp_full(n, n);
+    for (size_t k = 0; k < x.size(); ++k) Jp_full.middleCols(offsets[k], Jp[k].cols()) = Jp[k];
+    const Eigen::MatrixXd Jp_inv = Jp_full.inverse();
+    const Eigen::VectorXd dx_prior = Jp_inv * pr;  // x minus the prior mean, in x's tangent
+    rows.residual -= rows.H * dx_prior;
+    Eigen::MatrixXd P = Jp_inv * P0 * Jp_inv.transpose();
+    const UpdateResult up = kalmanUpdate(P, rows, std::numeric_limits<double>::infinity());
+    ASSERT_TRUE(up.accepted);
+    const Eigen::VectorXd step = up.dx - dx_prior;
+    for (size_t k = 0; k < x.size(); ++k) {
+      x[k] = test::perturbBlock(blocks[k], x[k], step.segment(offsets[k], blocks[k].tangentSize()));
+    }
+    if (step.norm() < 1e-13) break;
+  }
+
+  // Ceres on the same two models.
+  std::vector<Eigen::VectorXd> y = x0;
+  ceres::Problem problem;
+  std::vector<double*> ptrs;
+  for (auto& v : y) ptrs.push_back(v.data());
+  problem.AddResidualBlock(new ModelCostFunction(odo), nullptr, ptrs);
+  problem.AddResidualBlock(new ModelCostFunction(prior), nullptr, ptrs);
+  for (size_t k = 0; k < y.size(); ++k) {
+    if (blocks[k].kind == BlockKind::kRotation) {
+      problem.SetManifold(ptrs[k], new RightQuaternionManifold);
+    }
+  }
+  ceres::Solver::Options options;
+  options.function_tolerance = 1e-16;
+  options.gradient_tolerance = 1e-16;
+  options.parameter_tolerance = 1e-16;
+  options.max_num_iterations = 100;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  ASSERT_TRUE(summary.IsSolutionUsable()) << summary.BriefReport();
+
+  auto cost = [&](std::vector<Eigen::VectorXd>& v) {
+    double c = 0;
+    for (const std::shared_ptr<const MeasurementModel>& m :
+         {std::shared_ptr<const MeasurementModel>(odo), std::shared_ptr<const MeasurementModel>(prior)}) {
+      ModelCostFunction cf(m);
+      Eigen::VectorXd res(m->residualSize());
+      cf.Evaluate(test::pointers(v).data(), res.data(), nullptr);
+      c += res.squaredNorm();
+    }
+    return c;
+  };
+  EXPECT_LT(iterations, 500) << "the iterated filter did not converge";
+  EXPECT_NEAR(cost(x), cost(y), 1e-9 * cost(y));
+  double moved = 0.0;
+  for (size_t k = 0; k < x.size(); ++k) {
+    const StateBlock& b = blocks[k];
+    Eigen::VectorXd diff = b.kind == BlockKind::kRotation
+                               ? Eigen::VectorXd(boxMinus(quatFromWxyz(x[k].data()),
+                                                          quatFromWxyz(y[k].data())))
+                               : Eigen::VectorXd(x[k] - y[k]);
+    EXPECT_LT(diff.norm(), 1e-8) << b.name;
+    moved += (b.kind == BlockKind::kRotation ? 0.0 : (x[k] - x0[k]).norm());
+  }
+  EXPECT_GT(moved, 1e-3) << "the measurement must actually move the estimate";
+  // The estimate explains the odometer sample within its noise.
+  Eigen::VectorXd r;
+  odo->evaluate(test::pointers(x).data(), r, nullptr);
+  EXPECT_LT(std::abs(r[0]), 0.03);
+  EXPECT_LT(std::abs(r[1]), 0.015);
+}
+
+}  // namespace
+}  // namespace giocal
