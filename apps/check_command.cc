@@ -1,0 +1,57 @@
+#include "apps/check_command.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <ostream>
+
+#include "common/io/data_error.h"
+#include "common/io/dataset_description.h"
+#include "common/io/sensor_logs.h"
+#include "common/io/time_series_stats.h"
+#include "common/math/rotation.h"
+
+namespace giocal {
+
+namespace {
+
+void printStats(std::ostream& out, const std::string& name, const std::vector<double>& times) {
+  const TimeSeriesStats s = timeSeriesStats(times);
+  out << "  " << std::left << std::setw(10) << name << std::right << s.samples << " samples over "
+      << std::fixed << std::setprecision(2) << (s.t_last - s.t_first) << " s";
+  if (s.median_dt > 0) out << " at " << std::setprecision(1) << 1.0 / s.median_dt << " Hz";
+  if (s.gaps > 0) {
+    out << ", " << s.gaps << " gap(s), largest " << std::setprecision(3) << s.largest_gap
+        << " s at t=" << std::setprecision(3) << s.gap_start;
+  }
+  out << "\n";
+}
+
+template <typename T>
+std::vector<double> timesOf(const std::vector<T>& samples) {
+  std::vector<double> t;
+  t.reserve(samples.size());
+  for (const auto& s : samples) t.push_back(s.t);
+  return t;
+}
+
+}  // namespace
+
+void runCheck(const std::string& folder, std::ostream& out) {
+  const DatasetDescription d = readDatasetDescription(folder);
+  out << "dataset " << folder << "\n";
+  printStats(out, d.imu, timesOf(readImuCsv(d.pathOf(d.imu))));
+  printStats(out, d.odom, timesOf(readOdomCsv(d.pathOf(d.odom))));
+  if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));
+  std::vector<std::string> gnss{d.rover_obs, d.base_obs};
+  gnss.insert(gnss.end(), d.nav.begin(), d.nav.end());
+  for (const auto& f : gnss) {
+    if (!std::filesystem::exists(d.pathOf(f))) throw DataError(d.pathOf(f), 0, "file missing");
+    out << "  " << f << ": present (the RINEX reader is not implemented yet, issue 3)\n";
+  }
+  const auto& c = d.initial_calibration;
+  const Vec3 rpy = rpyFromRotation(c.mean.q_b_m.toRotationMatrix()) * kRadToDeg;
+  out << std::setprecision(4) << "  initial calibration: s_v " << c.mean.s_v << " s_w " << c.mean.s_w
+      << " p_b_m [" << c.mean.p_b_m.transpose() << "] m, rpy_b_m [" << rpy.transpose() << "] deg\n";
+}
+
+}  // namespace giocal

@@ -1,0 +1,68 @@
+// The giocal command: parses the sub-command and its options and calls the libraries.
+#include <boost/program_options.hpp>
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "apps/check_command.h"
+#include "common/io/data_error.h"
+
+namespace po = boost::program_options;
+
+namespace {
+
+const char* kUsage =
+    "giocal: online IMU-odometer calibration from raw GNSS\n"
+    "usage:\n"
+    "  giocal check     --data <dir>\n"
+    "  giocal simulate  --config <yaml> --out <dir> [--seed <n>]\n"
+    "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos x,y,z]\n"
+    "                   [--config <yaml>] --out <file.pos>\n"
+    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir>\n"
+    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";
+
+// Sub-commands of the command-line contract that are not implemented yet, and their issue.
+const std::map<std::string, std::string> kNotYet{{"simulate", "issue 4, the simulator"},
+                                                 {"rtk", "issue 3, the GNSS layer"},
+                                                 {"calibrate", "issues 5 and 6, the estimators"},
+                                                 {"compare", "issue 6, the factor graph"}};
+
+int runCheckCommand(int argc, char** argv) {
+  po::options_description opts("giocal check");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, opts), vm);
+  po::notify(vm);
+  giocal::runCheck(vm["data"].as<std::string>(), std::cout);
+  std::cout << "ok\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    std::cout << kUsage;
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string command = argv[1];
+  try {
+    if (command == "check") return runCheckCommand(argc - 1, argv + 1);
+    if (kNotYet.count(command)) {
+      std::cerr << "giocal " << command << ": not implemented yet (" << kNotYet.at(command)
+                << ")\n";
+      return 3;
+    }
+    std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
+    return 2;
+  } catch (const giocal::DataError& e) {
+    std::cerr << "giocal " << command << ": " << e.what() << "\n";
+    return 1;
+  } catch (const po::error& e) {
+    std::cerr << "giocal " << command << ": " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "giocal " << command << ": " << e.what() << "\n";
+    return 1;
+  }
+}
