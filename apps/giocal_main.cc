@@ -5,6 +5,7 @@
 #include <string>
 
 #include "apps/check_command.h"
+#include "apps/simulate_command.h"
 #include "common/io/data_error.h"
 
 namespace po = boost::program_options;
@@ -22,8 +23,7 @@ const char* kUsage =
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";
 
 // Sub-commands of the command-line contract that are not implemented yet, and their issue.
-const std::map<std::string, std::string> kNotYet{{"simulate", "issue 4, the simulator"},
-                                                 {"rtk", "issue 3, the GNSS layer"},
+const std::map<std::string, std::string> kNotYet{{"rtk", "issue 3, the GNSS layer"},
                                                  {"calibrate", "issues 5 and 6, the estimators"},
                                                  {"compare", "issue 6, the factor graph"}};
 
@@ -38,6 +38,19 @@ int runCheckCommand(int argc, char** argv) {
   return 0;
 }
 
+int runSimulateCommand(int argc, char** argv) {
+  po::options_description opts("giocal simulate");
+  opts.add_options()("config", po::value<std::string>()->required(), "simulator preset (YAML)")(
+      "out", po::value<std::string>()->required(), "output dataset folder")(
+      "seed", po::value<std::uint64_t>()->default_value(1), "random seed");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, opts), vm);
+  po::notify(vm);
+  giocal::runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
+                      vm["seed"].as<std::uint64_t>(), std::cout);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -48,6 +61,7 @@ int main(int argc, char** argv) {
   const std::string command = argv[1];
   try {
     if (command == "check") return runCheckCommand(argc - 1, argv + 1);
+    if (command == "simulate") return runSimulateCommand(argc - 1, argv + 1);
     if (kNotYet.count(command)) {
       std::cerr << "giocal " << command << ": not implemented yet (" << kNotYet.at(command)
                 << ")\n";

@@ -64,6 +64,12 @@ Eigen::Vector3d LocalFrame::gravity_n() const {
   return {0.0, 0.0, -normalGravity(origin_geo_.lat, origin_geo_.h)};
 }
 
+Eigen::Vector3d LocalFrame::gravity_n(const Eigen::Vector3d& p_n) const {
+  const Geodetic g = geodeticFromEcef(ecefFromEnu(p_n));
+  const Eigen::Vector3d up_e = rotationEcefFromEnu(g.lat, g.lon).col(2);
+  return -normalGravity(g.lat, g.h) * (R_e_n_.transpose() * up_e);
+}
+
 Eigen::Vector3d LocalFrame::omega_ie_n() const {
   return R_e_n_.transpose() * Eigen::Vector3d(0.0, 0.0, wgs84::kOmegaEarth);
 }

@@ -45,6 +45,9 @@ class LocalFrame {
 
   /// Gravity vector in n at the origin (points down).
   Eigen::Vector3d gravity_n() const;
+  /// Normal gravity vector in n at the point p_n (along that point's ellipsoid normal; 100 m from
+  /// the origin it tilts by 1.6e-5 rad from the origin's vertical).
+  Eigen::Vector3d gravity_n(const Eigen::Vector3d& p_n) const;
   /// Earth rotation rate expressed in n.
   Eigen::Vector3d omega_ie_n() const;
 

@@ -53,6 +53,16 @@ TEST(Wgs84, EnuFrame) {
   EXPECT_NEAR(w.y(), wgs84::kOmegaEarth * std::cos(frame.originGeodetic().lat), 1e-15);
 }
 
+TEST(Wgs84, GravityVectorFollowsThePosition) {
+  const LocalFrame frame(ecefFromGeodetic({0.6, 2.4, 50.0}));
+  EXPECT_LT((frame.gravity_n(Eigen::Vector3d::Zero()) - frame.gravity_n()).norm(), 1e-12);
+  // 1 km east the local up leans east by 1000 m / N (prime vertical radius), so gravity gains a
+  // westward component of that ratio.
+  const double s = std::sin(0.6), N = wgs84::kA / std::sqrt(1 - wgs84::kE2 * s * s);
+  const Eigen::Vector3d g = frame.gravity_n({1000.0, 0.0, 0.0});
+  EXPECT_NEAR(g.x() / -g.z(), -1000.0 / N, 1e-8);
+}
+
 TEST(Wgs84, NormalGravity) {
   EXPECT_NEAR(normalGravity(0.0, 0.0), 9.7803253359, 1e-9);
   EXPECT_NEAR(normalGravity(M_PI / 2, 0.0), 9.8321849379, 1e-8);

@@ -1,0 +1,45 @@
+// Error models applied to exact IMU and odometer values: biases (turn-on and random walk), white
+// noise, scale and misalignment for the IMU; scale factors, noise, drift and quantization for the
+// odometer.
+#pragma once
+
+#include <Eigen/Core>
+#include <random>
+
+#include "common/imu/imu_sample.h"
+#include "common/odometer/odom_sample.h"
+#include "sim/sim_config.h"
+
+namespace giocal::sim {
+
+class ImuErrors {
+ public:
+  /// Draws the turn-on biases, scale and misalignment from `rng`.
+  ImuErrors(const ImuErrorSpec& spec, std::mt19937_64& rng);
+  /// Measured sample from true rate and specific force; advances the bias random walks by dt.
+  ImuSample measure(double t, const Eigen::Vector3d& gyro, const Eigen::Vector3d& acc, double dt,
+                    std::mt19937_64& rng);
+  const Eigen::Vector3d& gyroBias() const { return b_g_; }
+  const Eigen::Vector3d& accelBias() const { return b_a_; }
+
+ private:
+  ImuErrorSpec spec_;
+  Eigen::Vector3d b_g_, b_a_;
+  Eigen::Matrix3d T_g_, T_a_;  // scale and misalignment: measured = T * true
+};
+
+class OdometerErrors {
+ public:
+  OdometerErrors(const OdometerErrorSpec& spec, double s_v, double s_w)
+      : spec_(spec), s_v_(s_v), s_w_(s_w) {}
+  /// measured = true / (1 + s) + noise, quantized; the scales drift as random walks.
+  OdomSample measure(double t, double speed, double yaw_rate, double dt, std::mt19937_64& rng);
+  double sV() const { return s_v_; }
+  double sW() const { return s_w_; }
+
+ private:
+  OdometerErrorSpec spec_;
+  double s_v_, s_w_;
+};
+
+}  // namespace giocal::sim

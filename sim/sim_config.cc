@@ -1,0 +1,87 @@
+#include "sim/sim_config.h"
+
+#include "common/io/data_error.h"
+#include "common/io/yaml_fields.h"
+#include "common/math/rotation.h"
+
+namespace giocal::sim {
+
+SimConfig readSimConfig(const std::string& path) {
+  const YamlFields y(path);
+  SimConfig c;
+  c.name = y.textOr("name", c.name);
+  c.start_time = y.textOr("start_time", c.start_time);
+  c.origin_lat_deg = y.numberOr("origin.lat_deg", c.origin_lat_deg, -89.0, 89.0);
+  c.origin_lon_deg = y.numberOr("origin.lon_deg", c.origin_lon_deg, -180.0, 180.0);
+  c.origin_h = y.numberOr("origin.h", c.origin_h, -500.0, 9000.0);
+  c.initial_heading_deg = y.numberOr("trajectory.initial_heading_deg", c.initial_heading_deg, -360, 360);
+  c.terrain.amplitude = y.numberOr("trajectory.terrain.amplitude", c.terrain.amplitude, 0.0, 100.0);
+  c.terrain.wavelength = y.numberOr("trajectory.terrain.wavelength", c.terrain.wavelength, 1.0, 1e5);
+
+  // trajectory.segments, then trajectory.loop repeated trajectory.laps times.
+  auto readSegments = [&](const std::string& key, int repeat) {
+    if (!y.root()["trajectory"][key].IsSequence()) y.fail("trajectory." + key, "needs a list of segments");
+    const YAML::Node segs = y.root()["trajectory"][key];
+    for (int lap = 0; lap < repeat; ++lap) {
+      for (size_t i = 0; i < segs.size(); ++i) {
+        YAML::Node wrapper;
+        wrapper["s"] = segs[i];
+        const YamlFields s(path, wrapper);
+        SegmentSpec spec;
+        spec.type = s.text("s.type");
+        spec.duration = s.numberOr("s.duration", 0.0, 0.0, 1e6);
+        spec.speed = s.numberOr("s.speed", -1.0, 0.0, 30.0);
+        spec.radius = s.numberOr("s.radius", 0.0, 0.0, 1e5);
+        spec.direction = s.textOr("s.direction", "left");
+        spec.angle_deg = s.numberOr("s.angle_deg", 0.0, 0.0, 1e5);
+        spec.rate_deg_s = s.numberOr("s.rate_deg_s", 0.0, -360.0, 360.0);
+        spec.transition = s.numberOr("s.transition", 1.0, 0.0, 100.0);
+        c.segments.push_back(spec);
+      }
+    }
+  };
+  if (!y.has("trajectory.segments")) y.fail("trajectory", "needs 'segments', a list of motion segments");
+  readSegments("segments", 1);
+  if (y.has("trajectory.loop")) {
+    readSegments("loop", static_cast<int>(y.number("trajectory.laps", 1, 1000)));
+  }
+  try {
+    MotionProfile check(c.segments);
+  } catch (const std::invalid_argument& e) {
+    y.fail("trajectory.segments", e.what());
+  }
+
+  ImuErrorSpec& m = c.imu;
+  m.rate_hz = y.numberOr("imu.rate_hz", m.rate_hz, 1.0, 2000.0);
+  m.gyro_bias_deg_h = y.numberOr("imu.gyro_bias_deg_h", m.gyro_bias_deg_h, 0.0, 1e5);
+  m.accel_bias_mgal = y.numberOr("imu.accel_bias_mgal", m.accel_bias_mgal, 0.0, 1e7);
+  m.arw_deg_sqrt_h = y.numberOr("imu.arw_deg_sqrt_h", m.arw_deg_sqrt_h, 0.0, 1e3);
+  m.vrw_m_s_sqrt_h = y.numberOr("imu.vrw_m_s_sqrt_h", m.vrw_m_s_sqrt_h, 0.0, 1e3);
+  m.gyro_bias_rw_deg_h_sqrt_h = y.numberOr("imu.gyro_bias_rw_deg_h_sqrt_h", m.gyro_bias_rw_deg_h_sqrt_h, 0.0, 1e5);
+  m.accel_bias_rw_mgal_sqrt_s = y.numberOr("imu.accel_bias_rw_mgal_sqrt_s", m.accel_bias_rw_mgal_sqrt_s, 0.0, 1e5);
+  m.scale_ppm = y.numberOr("imu.scale_ppm", m.scale_ppm, 0.0, 1e5);
+  m.misalignment_deg = y.numberOr("imu.misalignment_deg", m.misalignment_deg, 0.0, 10.0);
+
+  OdometerErrorSpec& o = c.odometer;
+  o.rate_hz = y.numberOr("odometer.rate_hz", o.rate_hz, 1.0, 1000.0);
+  o.speed_sigma = y.numberOr("odometer.speed_sigma", o.speed_sigma, 0.0, 10.0);
+  o.yaw_rate_sigma_deg_s = y.numberOr("odometer.yaw_rate_sigma_deg_s", o.yaw_rate_sigma_deg_s, 0.0, 100.0);
+  o.scale_drift_per_sqrt_s = y.numberOr("odometer.scale_drift_per_sqrt_s", o.scale_drift_per_sqrt_s, 0.0, 1.0);
+  o.speed_quantum = y.numberOr("odometer.speed_quantum", o.speed_quantum, 0.0, 1.0);
+  o.yaw_rate_quantum_deg_s = y.numberOr("odometer.yaw_rate_quantum_deg_s", o.yaw_rate_quantum_deg_s, 0.0, 10.0);
+
+  c.truth.s_v = y.number("calibration.s_v", -0.5, 0.5);
+  c.truth.s_w = y.number("calibration.s_w", -0.5, 0.5);
+  c.truth.p_b_m = y.vector3("calibration.p_b_m", -10.0, 10.0);
+  c.truth.q_b_m = Eigen::Quaterniond(
+      rotationFromRpy(y.vector3("calibration.rpy_b_m_deg", -180.0, 180.0) * kDegToRad));
+  c.p_b_g = y.vector3("calibration.p_b_g", -10.0, 10.0);
+
+  c.guess_sd_s_v = y.numberOr("initial_guess_sigma.s_v", c.guess_sd_s_v, 1e-9, 0.5);
+  c.guess_sd_s_w = y.numberOr("initial_guess_sigma.s_w", c.guess_sd_s_w, 1e-9, 0.5);
+  c.guess_sd_p_b_m = y.numberOr("initial_guess_sigma.p_b_m", c.guess_sd_p_b_m, 1e-9, 10.0);
+  c.guess_sd_rpy_deg = y.numberOr("initial_guess_sigma.rpy_deg", c.guess_sd_rpy_deg, 1e-9, 90.0);
+  return c;
+}
+
+}  // namespace giocal::sim

@@ -1,0 +1,147 @@
+#include "sim/simulator.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+
+#include "common/math/rotation.h"
+#include "common/time/gps_time.h"
+#include "sim/sensor_errors.h"
+#include "sim/trajectory.h"
+
+namespace giocal::sim {
+
+double parseGpsTime(const std::string& text) {
+  CalendarTime c;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d-%d-%d %d:%d:%lf%c", &c.year, &c.month, &c.day, &c.hour,
+                  &c.minute, &c.second, &tail) != 6 ||
+      c.month < 1 || c.month > 12 || c.day < 1 || c.day > 31 || c.hour > 23 || c.minute > 59 ||
+      c.second < 0.0 || c.second >= 60.0 || c.year < 1980) {
+    throw std::invalid_argument("time '" + text + "' is not 'yyyy-mm-dd hh:mm:ss' (GPST)");
+  }
+  return gpsSecondsFromCalendar(c);
+}
+
+namespace {
+
+// truth.csv row: IMU origin geodetic, velocity and attitude in the local-level ENU frame l at the
+// current position.
+TruthSample truthRow(const LocalFrame& frame, const NavState& s) {
+  const Eigen::Vector3d p_e = frame.ecefFromEnu(s.p_n_b);
+  const Geodetic g = geodeticFromEcef(p_e);
+  const Eigen::Matrix3d R_l_n = rotationEcefFromEnu(g.lat, g.lon).transpose() * frame.R_e_n();
+  TruthSample row;
+  row.t = s.t;
+  row.lat_deg = g.lat * kRadToDeg;
+  row.lon_deg = g.lon * kRadToDeg;
+  row.h = g.h;
+  row.v_enu = R_l_n * s.v_n_b;
+  row.q_n_b = Eigen::Quaterniond(R_l_n * s.q_n_b.toRotationMatrix()).normalized();
+  return row;
+}
+
+}  // namespace
+
+SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
+  const double t0 = parseGpsTime(config.start_time);
+  const Eigen::Vector3d origin_e = ecefFromGeodetic(
+      {config.origin_lat_deg * kDegToRad, config.origin_lon_deg * kDegToRad, config.origin_h});
+  SimulatedLogs out{LocalFrame(origin_e), {}, {}, {}, {}, {}, {}, {}, {}};
+  const LocalFrame& frame = out.frame;
+  const Trajectory traj(MotionProfile(config.segments), config.terrain, Eigen::Vector3d::Zero(),
+                        config.initial_heading_deg * kDegToRad);
+
+  // Independent streams for each sensor keep one sensor's draws from shifting another's.
+  std::mt19937_64 rng_imu(seed * 4 + 1), rng_odo(seed * 4 + 2), rng_guess(seed * 4 + 3);
+  ImuErrors imu_errors(config.imu, rng_imu);
+  const OdometerCalibration& truth = config.truth;
+  OdometerErrors odo_errors(config.odometer, truth.s_v, truth.s_w);
+  const Eigen::Matrix3d R_b_m = truth.q_b_m.toRotationMatrix();
+  const Eigen::Matrix3d R_m_b = R_b_m.transpose();
+  const Eigen::Vector3d p_m_b = -R_m_b * truth.p_b_m;
+  const Eigen::Vector3d w_ie_n = frame.omega_ie_n();
+
+  const double dt_imu = 1.0 / config.imu.rate_hz;
+  const long n_imu = static_cast<long>(std::floor(traj.duration() * config.imu.rate_hz + 1e-9));
+  for (long k = 0; k <= n_imu; ++k) {
+    const double tau = static_cast<double>(k) * dt_imu;
+    const VehicleKinematics m = traj.at(tau);
+    // Rigid mounting: T_n_b = T_n_m T_m_b.
+    const Eigen::Matrix3d R_n_b = m.R_n_m * R_m_b;
+    const Eigen::Vector3d w_x_p = m.w_m.cross(p_m_b);
+    NavState s;
+    s.t = t0 + tau;
+    s.p_n_b = m.p_n_m + m.R_n_m * p_m_b;
+    s.v_n_b = m.v_n_m + m.R_n_m * w_x_p;
+    s.q_n_b = Eigen::Quaterniond(R_n_b).normalized();
+    const Eigen::Vector3d a_n_b =
+        m.a_n_m + m.R_n_m * (m.alpha_m.cross(p_m_b) + m.w_m.cross(w_x_p));
+    // Earth-fixed n: a = R f + g - 2 w_ie x v, with g the normal gravity at the position.
+    const Eigen::Vector3d f_b =
+        R_n_b.transpose() * (a_n_b - frame.gravity_n(s.p_n_b) + 2.0 * w_ie_n.cross(s.v_n_b));
+    const Eigen::Vector3d w_ib_b = R_b_m * m.w_m + R_n_b.transpose() * w_ie_n;
+    s.b_g = imu_errors.gyroBias();
+    s.b_a = imu_errors.accelBias();
+    out.imu.push_back(imu_errors.measure(s.t, w_ib_b, f_b, dt_imu, rng_imu));
+    out.truth_n.push_back(s);
+    out.truth.push_back(truthRow(frame, s));
+  }
+
+  const double dt_odo = 1.0 / config.odometer.rate_hz;
+  const long n_odo = static_cast<long>(std::floor(traj.duration() * config.odometer.rate_hz + 1e-9));
+  for (long k = 0; k <= n_odo; ++k) {
+    const double tau = static_cast<double>(k) * dt_odo;
+    const VehicleKinematics m = traj.at(tau);
+    out.true_speed.push_back(m.speed);
+    out.true_yaw_rate.push_back(m.w_m.z());
+    out.odom.push_back(odo_errors.measure(t0 + tau, m.speed, m.w_m.z(), dt_odo, rng_odo));
+  }
+
+  out.truth_calib.calib = truth;
+  out.truth_calib.p_b_g = config.p_b_g;
+
+  DatasetDescription& d = out.description;
+  d.truth = "truth.csv";
+  const double arw = config.imu.arw_deg_sqrt_h * kDegToRad / 60.0;
+  d.imu_noise.gyro_noise_density = arw;
+  d.imu_noise.accel_noise_density = config.imu.vrw_m_s_sqrt_h / 60.0;
+  d.imu_noise.gyro_bias_random_walk =
+      std::max(config.imu.gyro_bias_rw_deg_h_sqrt_h * kDegToRad / 3600.0 / 60.0, 1e-7);
+  d.imu_noise.accel_bias_random_walk = std::max(config.imu.accel_bias_rw_mgal_sqrt_s * 1e-5, 1e-6);
+  d.imu_noise.gyro_bias_sigma = std::max(config.imu.gyro_bias_deg_h * kDegToRad / 3600.0, 1e-6);
+  d.imu_noise.accel_bias_sigma = std::max(config.imu.accel_bias_mgal * 1e-5, 1e-5);
+  d.odom_noise.speed_sigma = config.odometer.speed_sigma;
+  d.odom_noise.yaw_rate_sigma = config.odometer.yaw_rate_sigma_deg_s * kDegToRad;
+  d.odom_noise.scale_random_walk = config.odometer.scale_drift_per_sqrt_s;
+  d.p_b_g = config.p_b_g;
+
+  // The initial guess: the truth plus one draw of the configured sigma.
+  std::normal_distribution<double> n01(0.0, 1.0);
+  CalibrationPrior& prior = d.initial_calibration;
+  prior.sd_s_v = config.guess_sd_s_v;
+  prior.sd_s_w = config.guess_sd_s_w;
+  prior.sd_p_b_m = Eigen::Vector3d::Constant(config.guess_sd_p_b_m);
+  prior.sd_rpy_b_m = Eigen::Vector3d::Constant(config.guess_sd_rpy_deg * kDegToRad);
+  prior.mean.s_v = truth.s_v + config.guess_sd_s_v * n01(rng_guess);
+  prior.mean.s_w = truth.s_w + config.guess_sd_s_w * n01(rng_guess);
+  for (int i = 0; i < 3; ++i) prior.mean.p_b_m[i] = truth.p_b_m[i] + config.guess_sd_p_b_m * n01(rng_guess);
+  Eigen::Vector3d rot_err;
+  for (int i = 0; i < 3; ++i) rot_err[i] = config.guess_sd_rpy_deg * kDegToRad * n01(rng_guess);
+  prior.mean.q_b_m = Eigen::Quaterniond(R_b_m * expSO3(rot_err)).normalized();
+  return out;
+}
+
+void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
+  std::filesystem::create_directories(folder);
+  DatasetDescription d = logs.description;
+  d.folder = folder;
+  writeImuCsv(d.pathOf(d.imu), logs.imu);
+  writeOdomCsv(d.pathOf(d.odom), logs.odom);
+  writeTruthCsv(d.pathOf(d.truth), logs.truth);
+  writeTruthCalibration(folder + "/truth_calib.yaml", logs.truth_calib);
+  writeDatasetDescription(d);
+}
+
+}  // namespace giocal::sim

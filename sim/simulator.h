@@ -1,0 +1,41 @@
+// simulate(): the sensor logs of one dataset (IMU, odometer, truth) from a SimConfig and a seed,
+// and writeDataset() to put them in a dataset folder. GNSS observations are issue 4's next step.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "common/geodesy/wgs84.h"
+#include "common/imu/imu_sample.h"
+#include "common/imu/nav_state.h"
+#include "common/io/dataset_description.h"
+#include "common/io/sensor_logs.h"
+#include "common/odometer/odom_sample.h"
+#include "sim/sim_config.h"
+
+namespace giocal::sim {
+
+struct SimulatedLogs {
+  LocalFrame frame;                   // n: ENU at the trajectory start
+  std::vector<ImuSample> imu;
+  std::vector<OdomSample> odom;
+  std::vector<TruthSample> truth;     // truth.csv rows, at the IMU times
+  std::vector<NavState> truth_n;      // the same in n, with the true biases, for tests
+  std::vector<double> true_speed, true_yaw_rate;  // of m at the odometer times
+  DatasetDescription description;     // dataset.yaml content (folder left empty)
+  TruthCalibration truth_calib;
+};
+
+/// Physically exact truth (normal gravity at each position, Earth rotation, rigid mounting) and
+/// realistic sensor errors. The same config and seed give identical logs.
+SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed);
+
+/// Writes imu.csv, odom.csv, truth.csv, dataset.yaml and truth_calib.yaml into `folder`
+/// (created if missing); each file is written atomically.
+void writeDataset(const SimulatedLogs& logs, const std::string& folder);
+
+/// Parses "yyyy-mm-dd hh:mm:ss[.sss]" (GPST) into GPS seconds; throws std::invalid_argument.
+double parseGpsTime(const std::string& text);
+
+}  // namespace giocal::sim
