@@ -27,7 +27,8 @@ void Trajectory::terrainSlope(double s, double& h, double& dh, double& d2h, doub
 }
 
 Trajectory::Node Trajectory::integrate(Node n, double t0, double t1) const {
-  // RK4 on (psi, s, x, y); the horizontal speed is V cos(theta) with theta the terrain slope angle.
+  // RK4 on (psi, s, x, y); s is the horizontal distance travelled, advancing at the horizontal speed
+  // V cos(theta) with theta = atan(h'(s)) the slope angle, so that dz/dt = h'(s) s' = V sin(theta).
   auto deriv = [&](double t, const Node& x) {
     double v, v_dot, w, w_dot, h, dh, d2h, d3h;
     profile_.speed(t, v, v_dot);
@@ -35,8 +36,7 @@ Trajectory::Node Trajectory::integrate(Node n, double t0, double t1) const {
     terrainSlope(x.s, h, dh, d2h, d3h);
     const double horizontal = v / std::sqrt(1.0 + dh * dh);
     // Heading psi rotates the forward axis (0, 1, 0) to (-sin psi, cos psi, 0).
-    return Node{w, v,
-                -horizontal * std::sin(x.psi), horizontal * std::cos(x.psi)};
+    return Node{w, horizontal, -horizontal * std::sin(x.psi), horizontal * std::cos(x.psi)};
   };
   auto axpy = [](const Node& a, double h, const Node& d) {
     return Node{a.psi + h * d.psi, a.s + h * d.s, a.x + h * d.x, a.y + h * d.y};
@@ -67,13 +67,15 @@ VehicleKinematics Trajectory::at(double t) const {
   profile_.speed(tc, v, v_dot);
   profile_.yawRate(tc, w, w_dot);
   terrainSlope(n.s, h, dh, d2h, d3h);
-  // Pitch theta = atan(h'(s)) and its time derivatives along the path (s' = V).
+  // Pitch theta = atan(h'(s)) and its time derivatives; s' = V cos(theta).
   const double q = 1.0 + dh * dh;
   const double th = std::atan(dh);
   const double dth_ds = d2h / q;
   const double d2th_ds2 = (d3h * q - 2.0 * dh * d2h * d2h) / (q * q);
-  const double th_dot = dth_ds * v;
-  const double th_ddot = d2th_ds2 * v * v + dth_ds * v_dot;
+  const double s_dot = v * std::cos(th);
+  const double th_dot = dth_ds * s_dot;
+  const double s_ddot = v_dot * std::cos(th) - v * std::sin(th) * th_dot;
+  const double th_ddot = d2th_ds2 * s_dot * s_dot + dth_ds * s_ddot;
   const double psi = n.psi;
   // The profile's yaw rate W is the heading rate psi_dot (rotation about n's up axis).
   const double psi_dot = w, psi_ddot = w_dot;
