@@ -44,14 +44,24 @@ void runCheck(const std::string& folder, std::ostream& out) {
   if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));
   std::vector<std::string> gnss{d.rover_obs, d.base_obs};
   gnss.insert(gnss.end(), d.nav.begin(), d.nav.end());
+  std::vector<std::string> missing;
   for (const auto& f : gnss) {
-    if (!std::filesystem::exists(d.pathOf(f))) throw DataError(d.pathOf(f), 0, "file missing");
-    out << "  " << f << ": present (the RINEX reader is not implemented yet, issue 3)\n";
+    const bool present = std::filesystem::exists(d.pathOf(f));
+    out << "  " << f << ": "
+        << (present ? "present (the RINEX reader is not implemented yet, issue 3)" : "MISSING")
+        << "\n";
+    if (!present) missing.push_back(f);
   }
   const auto& c = d.initial_calibration;
   const Vec3 rpy = rpyFromRotation(c.mean.q_b_m.toRotationMatrix()) * kRadToDeg;
   out << std::setprecision(4) << "  initial calibration: s_v " << c.mean.s_v << " s_w " << c.mean.s_w
       << " p_b_m [" << c.mean.p_b_m.transpose() << "] m, rpy_b_m [" << rpy.transpose() << "] deg\n";
+  if (!missing.empty()) {
+    throw DataError(d.pathOf(missing.front()), 0,
+                    "file missing" + (missing.size() > 1 ? " (and " + std::to_string(missing.size() - 1) +
+                                                               " more GNSS files)"
+                                                         : std::string()));
+  }
 }
 
 }  // namespace giocal
