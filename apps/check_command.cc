@@ -54,13 +54,15 @@ void runCheck(const std::string& folder, std::ostream& out) {
   }
   const auto& c = d.initial_calibration;
   const Vec3 rpy = rpyFromRotation(c.mean.q_b_m.toRotationMatrix()) * kRadToDeg;
-  out << std::setprecision(4) << "  initial calibration: s_v " << c.mean.s_v << " s_w " << c.mean.s_w
-      << " p_b_m [" << c.mean.p_b_m.transpose() << "] m, rpy_b_m [" << rpy.transpose() << "] deg\n";
+  out << std::setprecision(4) << "  initial calibration: s_v " << c.mean.s_v << " s_w "
+      << c.mean.s_w << " p_b_m [" << c.mean.p_b_m.transpose() << "] m, rpy_b_m [" << rpy.transpose()
+      << "] deg\n";
   if (!missing.empty()) {
-    throw DataError(d.pathOf(missing.front()), 0,
-                    "file missing" + (missing.size() > 1 ? " (and " + std::to_string(missing.size() - 1) +
-                                                               " more GNSS files)"
-                                                         : std::string()));
+    throw DataError(
+        d.pathOf(missing.front()), 0,
+        "file missing" + (missing.size() > 1
+                              ? " (and " + std::to_string(missing.size() - 1) + " more GNSS files)"
+                              : std::string()));
   }
 }
 

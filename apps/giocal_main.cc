@@ -17,7 +17,8 @@ const char* kUsage =
     "usage:\n"
     "  giocal check     --data <dir>\n"
     "  giocal simulate  --config <yaml> --out <dir> [--seed <n>]\n"
-    "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos x,y,z]\n"
+    "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
+    "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos>\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir>\n"
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";

@@ -23,9 +23,10 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
   sim::writeDataset(logs, out);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  log << "simulated '" << cfg.name << "' (seed " << seed << "): "
-      << logs.truth.back().t - logs.truth.front().t << " s, " << logs.imu.size() << " IMU and "
-      << logs.odom.size() << " odometer samples in " << wall << " s -> " << out << "\n"
+  log << "simulated '" << cfg.name << "' (seed " << seed
+      << "): " << logs.truth.back().t - logs.truth.front().t << " s, " << logs.imu.size()
+      << " IMU and " << logs.odom.size() << " odometer samples in " << wall << " s -> " << out
+      << "\n"
       << "note: GNSS observations (rover.obs, base.obs, nav.rnx) are not simulated yet (issue 4)\n";
 }
 

@@ -7,7 +7,8 @@
 
 namespace giocal {
 
-/// Refuses to write into a folder that already holds a dataset (nothing a user wrote is overwritten).
+/// Refuses to write into a folder that already holds a dataset (nothing a user wrote is
+/// overwritten).
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
                  std::ostream& log);
 

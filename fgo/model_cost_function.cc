@@ -9,7 +9,8 @@ namespace giocal {
 ModelCostFunction::ModelCostFunction(std::shared_ptr<const MeasurementModel> model)
     : model_(std::move(model)) {
   set_num_residuals(model_->residualSize());
-  for (const auto& b : model_->blocks()) mutable_parameter_block_sizes()->push_back(b.ambientSize());
+  for (const auto& b : model_->blocks())
+    mutable_parameter_block_sizes()->push_back(b.ambientSize());
   const Eigen::MatrixXd info = model_->covariance().inverse();
   const Eigen::LLT<Eigen::MatrixXd> llt(info);
   if (llt.info() != Eigen::Success || !info.allFinite()) {

@@ -67,7 +67,8 @@ MotionProfile::MotionProfile(const std::vector<SegmentSpec>& segments) {
     } else if (s.type == "turn_in_place") {
       const double rate = s.rate_deg_s * kDeg;
       if (rate == 0.0) throw std::invalid_argument("turn_in_place needs rate_deg_s != 0");
-      const double d = s.angle_deg > 0.0 ? s.angle_deg * kDeg / std::abs(rate) + tr / 2.0 : s.duration;
+      const double d =
+          s.angle_deg > 0.0 ? s.angle_deg * kDeg / std::abs(rate) + tr / 2.0 : s.duration;
       add(d, tr, 0.0, rate);
     } else {
       throw std::invalid_argument("unknown motion segment type '" + s.type + "'");

@@ -9,14 +9,14 @@
 namespace giocal::sim {
 
 struct SegmentSpec {
-  std::string type;             // stationary | speed | straight | arc | turn_in_place | figure_eight
-  double duration = 0.0;        // [s]; arc and turn_in_place may give angle_deg instead
-  double speed = -1.0;          // target speed [m/s] (speed segments; others keep the current one)
-  double radius = 0.0;          // arc / figure_eight radius [m]
+  std::string type;       // stationary | speed | straight | arc | turn_in_place | figure_eight
+  double duration = 0.0;  // [s]; arc and turn_in_place may give angle_deg instead
+  double speed = -1.0;    // target speed [m/s] (speed segments; others keep the current one)
+  double radius = 0.0;    // arc / figure_eight radius [m]
   std::string direction = "left";  // arc turning direction (left = counter-clockwise)
-  double angle_deg = 0.0;       // arc / turn_in_place angle; 0 means "use duration"
-  double rate_deg_s = 0.0;      // turn_in_place yaw rate
-  double transition = 1.0;      // smooth-step length at the segment start [s]
+  double angle_deg = 0.0;          // arc / turn_in_place angle; 0 means "use duration"
+  double rate_deg_s = 0.0;         // turn_in_place yaw rate
+  double transition = 1.0;         // smooth-step length at the segment start [s]
 };
 
 class MotionProfile {

@@ -14,13 +14,16 @@ SimConfig readSimConfig(const std::string& path) {
   c.origin_lat_deg = y.numberOr("origin.lat_deg", c.origin_lat_deg, -89.0, 89.0);
   c.origin_lon_deg = y.numberOr("origin.lon_deg", c.origin_lon_deg, -180.0, 180.0);
   c.origin_h = y.numberOr("origin.h", c.origin_h, -500.0, 9000.0);
-  c.initial_heading_deg = y.numberOr("trajectory.initial_heading_deg", c.initial_heading_deg, -360, 360);
+  c.initial_heading_deg =
+      y.numberOr("trajectory.initial_heading_deg", c.initial_heading_deg, -360, 360);
   c.terrain.amplitude = y.numberOr("trajectory.terrain.amplitude", c.terrain.amplitude, 0.0, 100.0);
-  c.terrain.wavelength = y.numberOr("trajectory.terrain.wavelength", c.terrain.wavelength, 1.0, 1e5);
+  c.terrain.wavelength =
+      y.numberOr("trajectory.terrain.wavelength", c.terrain.wavelength, 1.0, 1e5);
 
   // trajectory.segments, then trajectory.loop repeated trajectory.laps times.
   auto readSegments = [&](const std::string& key, int repeat) {
-    if (!y.root()["trajectory"][key].IsSequence()) y.fail("trajectory." + key, "needs a list of segments");
+    if (!y.root()["trajectory"][key].IsSequence())
+      y.fail("trajectory." + key, "needs a list of segments");
     const YAML::Node segs = y.root()["trajectory"][key];
     for (int lap = 0; lap < repeat; ++lap) {
       for (size_t i = 0; i < segs.size(); ++i) {
@@ -40,7 +43,8 @@ SimConfig readSimConfig(const std::string& path) {
       }
     }
   };
-  if (!y.has("trajectory.segments")) y.fail("trajectory", "needs 'segments', a list of motion segments");
+  if (!y.has("trajectory.segments"))
+    y.fail("trajectory", "needs 'segments', a list of motion segments");
   readSegments("segments", 1);
   if (y.has("trajectory.loop")) {
     readSegments("loop", static_cast<int>(y.number("trajectory.laps", 1, 1000)));
@@ -57,18 +61,23 @@ SimConfig readSimConfig(const std::string& path) {
   m.accel_bias_mgal = y.numberOr("imu.accel_bias_mgal", m.accel_bias_mgal, 0.0, 1e7);
   m.arw_deg_sqrt_h = y.numberOr("imu.arw_deg_sqrt_h", m.arw_deg_sqrt_h, 0.0, 1e3);
   m.vrw_m_s_sqrt_h = y.numberOr("imu.vrw_m_s_sqrt_h", m.vrw_m_s_sqrt_h, 0.0, 1e3);
-  m.gyro_bias_rw_deg_h_sqrt_h = y.numberOr("imu.gyro_bias_rw_deg_h_sqrt_h", m.gyro_bias_rw_deg_h_sqrt_h, 0.0, 1e5);
-  m.accel_bias_rw_mgal_sqrt_s = y.numberOr("imu.accel_bias_rw_mgal_sqrt_s", m.accel_bias_rw_mgal_sqrt_s, 0.0, 1e5);
+  m.gyro_bias_rw_deg_h_sqrt_h =
+      y.numberOr("imu.gyro_bias_rw_deg_h_sqrt_h", m.gyro_bias_rw_deg_h_sqrt_h, 0.0, 1e5);
+  m.accel_bias_rw_mgal_sqrt_s =
+      y.numberOr("imu.accel_bias_rw_mgal_sqrt_s", m.accel_bias_rw_mgal_sqrt_s, 0.0, 1e5);
   m.scale_ppm = y.numberOr("imu.scale_ppm", m.scale_ppm, 0.0, 1e5);
   m.misalignment_deg = y.numberOr("imu.misalignment_deg", m.misalignment_deg, 0.0, 10.0);
 
   OdometerErrorSpec& o = c.odometer;
   o.rate_hz = y.numberOr("odometer.rate_hz", o.rate_hz, 1.0, 1000.0);
   o.speed_sigma = y.numberOr("odometer.speed_sigma", o.speed_sigma, 0.0, 10.0);
-  o.yaw_rate_sigma_deg_s = y.numberOr("odometer.yaw_rate_sigma_deg_s", o.yaw_rate_sigma_deg_s, 0.0, 100.0);
-  o.scale_drift_per_sqrt_s = y.numberOr("odometer.scale_drift_per_sqrt_s", o.scale_drift_per_sqrt_s, 0.0, 1.0);
+  o.yaw_rate_sigma_deg_s =
+      y.numberOr("odometer.yaw_rate_sigma_deg_s", o.yaw_rate_sigma_deg_s, 0.0, 100.0);
+  o.scale_drift_per_sqrt_s =
+      y.numberOr("odometer.scale_drift_per_sqrt_s", o.scale_drift_per_sqrt_s, 0.0, 1.0);
   o.speed_quantum = y.numberOr("odometer.speed_quantum", o.speed_quantum, 0.0, 1.0);
-  o.yaw_rate_quantum_deg_s = y.numberOr("odometer.yaw_rate_quantum_deg_s", o.yaw_rate_quantum_deg_s, 0.0, 10.0);
+  o.yaw_rate_quantum_deg_s =
+      y.numberOr("odometer.yaw_rate_quantum_deg_s", o.yaw_rate_quantum_deg_s, 0.0, 10.0);
 
   c.truth.s_v = y.number("calibration.s_v", -0.5, 0.5);
   c.truth.s_w = y.number("calibration.s_w", -0.5, 0.5);

@@ -26,30 +26,30 @@ struct ImuErrorSpec {
 
 struct OdometerErrorSpec {
   double rate_hz = 25.0;
-  double speed_sigma = 0.01;       // white noise [m/s]
-  double yaw_rate_sigma_deg_s = 1.0;  // white noise [deg/s]
+  double speed_sigma = 0.01;            // white noise [m/s]
+  double yaw_rate_sigma_deg_s = 1.0;    // white noise [deg/s]
   double scale_drift_per_sqrt_s = 0.0;  // random walk of s_v and s_w [1/sqrt(s)]
-  double speed_quantum = 0.0;      // measurement resolution [m/s]; 0 = none
+  double speed_quantum = 0.0;           // measurement resolution [m/s]; 0 = none
   double yaw_rate_quantum_deg_s = 0.0;
 };
 
 struct SimConfig {
   std::string name = "sim";
   std::string start_time = "2024-06-24 08:20:30";  // GPST, inside data/real nav validity
-  double origin_lat_deg = 35.1347;   // start of the trajectory
+  double origin_lat_deg = 35.1347;                 // start of the trajectory
   double origin_lon_deg = 136.9776;
   double origin_h = 60.0;
-  double initial_heading_deg = 30.0; // yaw of m at the start (from north towards west)
+  double initial_heading_deg = 30.0;  // yaw of m at the start (from north towards west)
   Terrain terrain;
   std::vector<SegmentSpec> segments;
   ImuErrorSpec imu;
   OdometerErrorSpec odometer;
-  OdometerCalibration truth;         // true s_v, s_w, p_b_m, q_b_m
+  OdometerCalibration truth;  // true s_v, s_w, p_b_m, q_b_m
   Eigen::Vector3d p_b_g{0.0, 0.0, 0.5};
   // 1-sigma of the initial calibration guess drawn around the truth (written to dataset.yaml).
   double guess_sd_s_v = 0.02, guess_sd_s_w = 0.02;
-  double guess_sd_p_b_m = 0.5;       // [m]
-  double guess_sd_rpy_deg = 5.0;     // [deg]
+  double guess_sd_p_b_m = 0.5;    // [m]
+  double guess_sd_rpy_deg = 5.0;  // [deg]
 };
 
 /// Throws DataError naming the file, line and problem.

@@ -76,8 +76,7 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
     s.p_n_b = m.p_n_m + m.R_n_m * p_m_b;
     s.v_n_b = m.v_n_m + m.R_n_m * w_x_p;
     s.q_n_b = Eigen::Quaterniond(R_n_b).normalized();
-    const Eigen::Vector3d a_n_b =
-        m.a_n_m + m.R_n_m * (m.alpha_m.cross(p_m_b) + m.w_m.cross(w_x_p));
+    const Eigen::Vector3d a_n_b = m.a_n_m + m.R_n_m * (m.alpha_m.cross(p_m_b) + m.w_m.cross(w_x_p));
     // Earth-fixed n: a = R f + g - 2 w_ie x v, with g the normal gravity at the position.
     const Eigen::Vector3d f_b =
         R_n_b.transpose() * (a_n_b - frame.gravity_n(s.p_n_b) + 2.0 * w_ie_n.cross(s.v_n_b));
@@ -90,7 +89,8 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   }
 
   const double dt_odo = 1.0 / config.odometer.rate_hz;
-  const long n_odo = static_cast<long>(std::floor(traj.duration() * config.odometer.rate_hz + 1e-9));
+  const long n_odo =
+      static_cast<long>(std::floor(traj.duration() * config.odometer.rate_hz + 1e-9));
   for (long k = 0; k <= n_odo; ++k) {
     const double tau = static_cast<double>(k) * dt_odo;
     const VehicleKinematics m = traj.at(tau);
@@ -126,7 +126,8 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   prior.sd_rpy_b_m = Eigen::Vector3d::Constant(config.guess_sd_rpy_deg * kDegToRad);
   prior.mean.s_v = truth.s_v + config.guess_sd_s_v * n01(rng_guess);
   prior.mean.s_w = truth.s_w + config.guess_sd_s_w * n01(rng_guess);
-  for (int i = 0; i < 3; ++i) prior.mean.p_b_m[i] = truth.p_b_m[i] + config.guess_sd_p_b_m * n01(rng_guess);
+  for (int i = 0; i < 3; ++i)
+    prior.mean.p_b_m[i] = truth.p_b_m[i] + config.guess_sd_p_b_m * n01(rng_guess);
   Eigen::Vector3d rot_err;
   for (int i = 0; i < 3; ++i) rot_err[i] = config.guess_sd_rpy_deg * kDegToRad * n01(rng_guess);
   prior.mean.q_b_m = Eigen::Quaterniond(R_b_m * expSO3(rot_err)).normalized();

@@ -17,13 +17,13 @@
 namespace giocal::sim {
 
 struct SimulatedLogs {
-  LocalFrame frame;                   // n: ENU at the trajectory start
+  LocalFrame frame;  // n: ENU at the trajectory start
   std::vector<ImuSample> imu;
   std::vector<OdomSample> odom;
-  std::vector<TruthSample> truth;     // truth.csv rows, at the IMU times
-  std::vector<NavState> truth_n;      // the same in n, with the true biases, for tests
+  std::vector<TruthSample> truth;                 // truth.csv rows, at the IMU times
+  std::vector<NavState> truth_n;                  // the same in n, with the true biases, for tests
   std::vector<double> true_speed, true_yaw_rate;  // of m at the odometer times
-  DatasetDescription description;     // dataset.yaml content (folder left empty)
+  DatasetDescription description;                 // dataset.yaml content (folder left empty)
   TruthCalibration truth_calib;
 };
 

@@ -27,8 +27,9 @@ void Trajectory::terrainSlope(double s, double& h, double& dh, double& d2h, doub
 }
 
 Trajectory::Node Trajectory::integrate(Node n, double t0, double t1) const {
-  // RK4 on (psi, s, x, y); s is the horizontal distance travelled, advancing at the horizontal speed
-  // V cos(theta) with theta = atan(h'(s)) the slope angle, so that dz/dt = h'(s) s' = V sin(theta).
+  // RK4 on (psi, s, x, y); s is the horizontal distance travelled, advancing at the horizontal
+  // speed V cos(theta) with theta = atan(h'(s)) the slope angle, so that dz/dt = h'(s) s' = V
+  // sin(theta).
   auto deriv = [&](double t, const Node& x) {
     double v, v_dot, w, w_dot, h, dh, d2h, d3h;
     profile_.speed(t, v, v_dot);
@@ -86,7 +87,7 @@ VehicleKinematics Trajectory::at(double t) const {
   out.R_n_m = expSO3(Eigen::Vector3d(0, 0, psi)) * expSO3(Eigen::Vector3d(th, 0, 0));
   out.p_n_m = {n.x, n.y, p0_n_.z() + h};
   const double c = std::cos(th), s = std::sin(th), cp = std::cos(psi), sp = std::sin(psi);
-  const double H = v * c;                            // horizontal speed
+  const double H = v * c;  // horizontal speed
   const double H_dot = v_dot * c - v * s * th_dot;
   out.v_n_m = {-H * sp, H * cp, v * s};
   out.a_n_m = {-H_dot * sp - H * cp * psi_dot, H_dot * cp - H * sp * psi_dot,

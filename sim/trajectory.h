@@ -11,8 +11,8 @@
 namespace giocal::sim {
 
 struct Terrain {
-  double amplitude = 0.0;    // height h(s) = amplitude * sin(2 pi s / wavelength) [m]
-  double wavelength = 100.0; // s: horizontal distance travelled [m]
+  double amplitude = 0.0;     // height h(s) = amplitude * sin(2 pi s / wavelength) [m]
+  double wavelength = 100.0;  // s: horizontal distance travelled [m]
 };
 
 /// The state of m at one instant.

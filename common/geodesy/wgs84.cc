@@ -38,9 +38,9 @@ Eigen::Matrix3d rotationEcefFromEnu(double lat, double lon) {
 }
 
 double normalGravity(double lat, double h) {
-  constexpr double kGammaE = 9.7803253359;      // normal gravity at the equator [m/s^2]
-  constexpr double kSomK = 0.00193185265241;    // Somigliana constant
-  constexpr double kM = 0.00344978650684;       // omega^2 a^2 b / GM
+  constexpr double kGammaE = 9.7803253359;    // normal gravity at the equator [m/s^2]
+  constexpr double kSomK = 0.00193185265241;  // Somigliana constant
+  constexpr double kM = 0.00344978650684;     // omega^2 a^2 b / GM
   const double s2 = std::sin(lat) * std::sin(lat);
   const double g0 = kGammaE * (1.0 + kSomK * s2) / std::sqrt(1.0 - wgs84::kE2 * s2);
   return g0 * (1.0 - 2.0 / wgs84::kA * (1.0 + wgs84::kF + kM - 2.0 * wgs84::kF * s2) * h +

@@ -6,11 +6,11 @@
 namespace giocal {
 
 namespace wgs84 {
-constexpr double kA = 6378137.0;                    // semi-major axis [m]
-constexpr double kF = 1.0 / 298.257223563;          // flattening
-constexpr double kE2 = kF * (2.0 - kF);             // first eccentricity squared
-constexpr double kOmegaEarth = 7.2921151467e-5;     // Earth rotation rate [rad/s]
-constexpr double kGM = 3.986004418e14;              // gravitational constant [m^3/s^2]
+constexpr double kA = 6378137.0;                 // semi-major axis [m]
+constexpr double kF = 1.0 / 298.257223563;       // flattening
+constexpr double kE2 = kF * (2.0 - kF);          // first eccentricity squared
+constexpr double kOmegaEarth = 7.2921151467e-5;  // Earth rotation rate [rad/s]
+constexpr double kGM = 3.986004418e14;           // gravitational constant [m^3/s^2]
 }  // namespace wgs84
 
 /// Latitude, longitude [rad] and ellipsoidal height [m].

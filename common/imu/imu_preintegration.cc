@@ -63,8 +63,8 @@ void ImuPreintegration::addStep(const Step& s) {
   // Error-state transition over [dp, dtheta, dv, dba, dbg] and noise input [n_g, n_a, n_bg, n_ba].
   Eigen::Matrix<double, 15, 15> A = Eigen::Matrix<double, 15, 15>::Identity();
   Eigen::Matrix<double, 15, 12> B = Eigen::Matrix<double, 15, 12>::Zero();
-  const Mat3 Ga_bg_v = 0.5 * dR_ * skew(a) * dt2;         // dv by a gyro error
-  const Mat3 Ga_bg_p = dR_ * skew(a) * dt2 * dt / 6.0;    // dp by a gyro error
+  const Mat3 Ga_bg_v = 0.5 * dR_ * skew(a) * dt2;       // dv by a gyro error
+  const Mat3 Ga_bg_p = dR_ * skew(a) * dt2 * dt / 6.0;  // dp by a gyro error
   A.block<3, 3>(kP, kR) = -dR_ * skew(G2 * a) * dt2;
   A.block<3, 3>(kP, kV) = Mat3::Identity() * dt;
   A.block<3, 3>(kP, kBa) = -dR_ * G2 * dt2;

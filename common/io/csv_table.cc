@@ -88,7 +88,8 @@ CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& h
     if (!table.rows.empty()) {
       const double prev = table.rows.back()[0];
       if (row[0] == prev) throw DataError(path, line_no, "duplicated time " + fields[0]);
-      if (row[0] < prev) throw DataError(path, line_no, "time goes backwards (" + trim(fields[0]) + ")");
+      if (row[0] < prev)
+        throw DataError(path, line_no, "time goes backwards (" + trim(fields[0]) + ")");
     }
     table.rows.push_back(std::move(row));
     table.line_numbers.push_back(line_no);

@@ -10,9 +10,9 @@ namespace giocal {
 
 namespace {
 
-constexpr double kMaxNoise = 1e3;      // any noise figure above this is a unit mistake
-constexpr double kMaxLever = 100.0;    // [m] between sensors on one robot
-constexpr double kMaxScale = 0.9;      // |s| beyond this is no longer a scale error
+constexpr double kMaxNoise = 1e3;    // any noise figure above this is a unit mistake
+constexpr double kMaxLever = 100.0;  // [m] between sensors on one robot
+constexpr double kMaxScale = 0.9;    // |s| beyond this is no longer a scale error
 
 // Reads q_b_m from "<key>.q_b_m" [w,x,y,z] or "<key>.rpy_b_m_deg"; both present must agree.
 Eigen::Quaterniond readRotation(const YamlFields& y, const std::string& key) {
@@ -20,7 +20,8 @@ Eigen::Quaterniond readRotation(const YamlFields& y, const std::string& key) {
   if (!has_q && !has_rpy) y.fail(key, "needs q_b_m or rpy_b_m_deg");
   Eigen::Quaterniond q_rpy = Eigen::Quaterniond::Identity();
   if (has_rpy) {
-    q_rpy = Eigen::Quaterniond(rotationFromRpy(y.vector3(key + ".rpy_b_m_deg", -360, 360) * kDegToRad));
+    q_rpy =
+        Eigen::Quaterniond(rotationFromRpy(y.vector3(key + ".rpy_b_m_deg", -360, 360) * kDegToRad));
   }
   if (!has_q) return q_rpy;
   const Eigen::Vector4d v = y.vector4(key + ".q_b_m");
@@ -114,7 +115,8 @@ void writeDatasetDescription(const DatasetDescription& d) {
   const ImuNoise& n = d.imu_noise;
   out << Key << "imu" << Value << BeginMap;
   out << Key << "gyro_noise_density" << Value << n.gyro_noise_density << Comment("rad/s/sqrt(Hz)");
-  out << Key << "accel_noise_density" << Value << n.accel_noise_density << Comment("m/s^2/sqrt(Hz)");
+  out << Key << "accel_noise_density" << Value << n.accel_noise_density
+      << Comment("m/s^2/sqrt(Hz)");
   out << Key << "gyro_bias_random_walk" << Value << n.gyro_bias_random_walk
       << Comment("rad/s^2/sqrt(Hz)");
   out << Key << "accel_bias_random_walk" << Value << n.accel_bias_random_walk

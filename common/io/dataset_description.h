@@ -46,7 +46,7 @@ struct DatasetDescription {
   std::string truth;  // empty when the dataset has no truth
   ImuNoise imu_noise;
   OdometerNoise odom_noise;
-  Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();   // GNSS antenna in b [m]
+  Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();    // GNSS antenna in b [m]
   std::optional<Eigen::Vector3d> base_position_ecef;  // [m]; else the base RINEX header
   CalibrationPrior initial_calibration;
 

@@ -10,10 +10,10 @@ namespace giocal {
 
 struct ModelOptions {
   MotionDetectorOptions motion;
-  double zupt_sigma = 0.01;              // zero-velocity noise [m/s]
-  double nhc_sigma = 0.05;               // lateral/vertical vehicle speed noise [m/s]
-  double lateral_speed_density = 0.01;   // odometer slip and uneven ground [m/s/sqrt(Hz)]
-  double tilt_rate_density = 0.005;      // roll/pitch rate of uneven ground [rad/s/sqrt(Hz)]
+  double zupt_sigma = 0.01;             // zero-velocity noise [m/s]
+  double nhc_sigma = 0.05;              // lateral/vertical vehicle speed noise [m/s]
+  double lateral_speed_density = 0.01;  // odometer slip and uneven ground [m/s/sqrt(Hz)]
+  double tilt_rate_density = 0.005;     // roll/pitch rate of uneven ground [rad/s/sqrt(Hz)]
 };
 
 /// Reads the "models" section of a giocal YAML config; keys left out keep their defaults.

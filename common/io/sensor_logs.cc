@@ -64,10 +64,18 @@ void writeOdomCsv(const std::string& path, const std::vector<OdomSample>& sample
 
 std::vector<TruthSample> readTruthCsv(const std::string& path) {
   const ColumnRange vel{-500.0, 500.0}, unit{-1.0001, 1.0001};
-  const CsvTable table = readCsvTable(
-      path, kTruthHeader,
-      {kTime, {-90.0, 90.0}, {-180.0, 180.0}, {-1000.0, 100000.0}, vel, vel, vel, unit, unit, unit,
-       unit});
+  const CsvTable table = readCsvTable(path, kTruthHeader,
+                                      {kTime,
+                                       {-90.0, 90.0},
+                                       {-180.0, 180.0},
+                                       {-1000.0, 100000.0},
+                                       vel,
+                                       vel,
+                                       vel,
+                                       unit,
+                                       unit,
+                                       unit,
+                                       unit});
   std::vector<TruthSample> out(table.rows.size());
   for (size_t i = 0; i < out.size(); ++i) {
     const auto& r = table.rows[i];

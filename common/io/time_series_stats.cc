@@ -14,7 +14,8 @@ TimeSeriesStats timeSeriesStats(const std::vector<double>& times, double gap_fac
   std::vector<double> dt(times.size() - 1);
   for (size_t k = 0; k + 1 < times.size(); ++k) dt[k] = times[k + 1] - times[k];
   std::vector<double> sorted = dt;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2),
+                   sorted.end());
   s.median_dt = sorted[sorted.size() / 2];
   for (size_t k = 0; k < dt.size(); ++k) {
     if (dt[k] > gap_factor * s.median_dt) {

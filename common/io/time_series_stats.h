@@ -10,10 +10,10 @@ struct TimeSeriesStats {
   std::size_t samples = 0;
   double t_first = 0.0;
   double t_last = 0.0;
-  double median_dt = 0.0;   // nominal sample interval [s]
-  std::size_t gaps = 0;          // intervals longer than gap_factor * median_dt
-  double largest_gap = 0.0; // [s]
-  double gap_start = 0.0;   // time at which the largest gap starts
+  double median_dt = 0.0;    // nominal sample interval [s]
+  std::size_t gaps = 0;      // intervals longer than gap_factor * median_dt
+  double largest_gap = 0.0;  // [s]
+  double gap_start = 0.0;    // time at which the largest gap starts
 };
 
 /// `times` must be increasing (the readers guarantee it).

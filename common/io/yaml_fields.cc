@@ -84,8 +84,7 @@ double YamlFields::number(const std::string& key, double min, double max) const 
   return v;
 }
 
-double YamlFields::numberOr(const std::string& key, double fallback, double min,
-                            double max) const {
+double YamlFields::numberOr(const std::string& key, double fallback, double min, double max) const {
   return has(key) ? number(key, min, max) : fallback;
 }
 
@@ -107,7 +106,8 @@ std::vector<std::string> YamlFields::textList(const std::string& key) const {
   }
   std::vector<std::string> out;
   for (const auto& item : node) {
-    if (!item.IsScalar()) throw DataError(path_, lineOf(item), "'" + key + "' items must be strings");
+    if (!item.IsScalar())
+      throw DataError(path_, lineOf(item), "'" + key + "' items must be strings");
     out.push_back(item.as<std::string>());
   }
   return out;

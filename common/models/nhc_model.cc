@@ -14,8 +14,9 @@ const std::vector<StateBlock>& NhcModel::blocks() const {
 
 void NhcModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
                         std::vector<Eigen::MatrixXd>* jacobians) const {
-  const VehicleVelocity vv = vehicleVelocity(vec3At(params[0]), quatAt(params[1]), gyro_,
-                                             vec3At(params[2]), vec3At(params[3]), quatAt(params[4]));
+  const VehicleVelocity vv =
+      vehicleVelocity(vec3At(params[0]), quatAt(params[1]), gyro_, vec3At(params[2]),
+                      vec3At(params[3]), quatAt(params[4]));
   // Rows x (lateral) and z (vertical) of the vehicle velocity.
   Eigen::Matrix<double, 2, 3> S;
   S << 1, 0, 0, 0, 0, 1;

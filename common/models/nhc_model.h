@@ -1,5 +1,5 @@
-// NhcModel: the non-holonomic constraint, zero lateral and vertical velocity of the vehicle frame m,
-// seen through the IMU state and the extrinsic.
+// NhcModel: the non-holonomic constraint, zero lateral and vertical velocity of the vehicle frame
+// m, seen through the IMU state and the extrinsic.
 #pragma once
 
 #include <Eigen/Core>

@@ -5,11 +5,14 @@
 namespace giocal {
 
 const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{
-      vectorBlock(block::at(block::kP, 'i')),     rotationBlock(block::at(block::kQ, 'i')),
-      vectorBlock(block::at(block::kP, 'j')),     rotationBlock(block::at(block::kQ, 'j')),
-      vectorBlock(block::at(block::kSv, 'i'), 1), vectorBlock(block::at(block::kSw, 'i'), 1),
-      vectorBlock(block::kPbm),                   rotationBlock(block::kQbm)};
+  static const std::vector<StateBlock> kBlocks{vectorBlock(block::at(block::kP, 'i')),
+                                               rotationBlock(block::at(block::kQ, 'i')),
+                                               vectorBlock(block::at(block::kP, 'j')),
+                                               rotationBlock(block::at(block::kQ, 'j')),
+                                               vectorBlock(block::at(block::kSv, 'i'), 1),
+                                               vectorBlock(block::at(block::kSw, 'i'), 1),
+                                               vectorBlock(block::kPbm),
+                                               rotationBlock(block::kQbm)};
   return kBlocks;
 }
 

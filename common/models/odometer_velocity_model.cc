@@ -7,16 +7,17 @@ namespace giocal {
 
 const std::vector<StateBlock>& OdometerVelocityModel::blocks() const {
   static const std::vector<StateBlock> kBlocks{
-      vectorBlock(block::kV),      rotationBlock(block::kQ),  vectorBlock(block::kBg),
-      vectorBlock(block::kSv, 1),  vectorBlock(block::kSw, 1), vectorBlock(block::kPbm),
+      vectorBlock(block::kV),     rotationBlock(block::kQ),   vectorBlock(block::kBg),
+      vectorBlock(block::kSv, 1), vectorBlock(block::kSw, 1), vectorBlock(block::kPbm),
       rotationBlock(block::kQbm)};
   return kBlocks;
 }
 
 void OdometerVelocityModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
                                      std::vector<Eigen::MatrixXd>* jacobians) const {
-  const VehicleVelocity vv = vehicleVelocity(vec3At(params[0]), quatAt(params[1]), gyro_,
-                                             vec3At(params[2]), vec3At(params[5]), quatAt(params[6]));
+  const VehicleVelocity vv =
+      vehicleVelocity(vec3At(params[0]), quatAt(params[1]), gyro_, vec3At(params[2]),
+                      vec3At(params[5]), quatAt(params[6]));
   const double k_v = 1.0 / (1.0 + params[3][0]);
   const double k_w = 1.0 / (1.0 + params[4][0]);
   residual.resize(2);

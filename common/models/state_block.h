@@ -12,7 +12,7 @@ enum class BlockKind { kVector, kRotation };
 struct StateBlock {
   std::string name;  // e.g. "v_n_b"; two-state models suffix "@i" and "@j"
   BlockKind kind = BlockKind::kVector;
-  int size = 3;      // tangent size; a Rotation has 3
+  int size = 3;  // tangent size; a Rotation has 3
 
   int ambientSize() const { return kind == BlockKind::kRotation ? 4 : size; }
   int tangentSize() const { return size; }

@@ -9,10 +9,10 @@ namespace giocal {
 
 /// Thresholds of the reference paper, configurable.
 struct MotionDetectorOptions {
-  double window_s = 1.0;                      // averaging window [s]
+  double window_s = 1.0;                               // averaging window [s]
   double zupt_max_gyro = 0.05 * 0.017453292519943295;  // mean |w| below this is static [rad/s]
   double nhc_max_gyro = 5.0 * 0.017453292519943295;    // mean |w| below this is not turning [rad/s]
-  double nhc_min_speed = 1.0;                 // mean forward speed above this for NHC [m/s]
+  double nhc_min_speed = 1.0;  // mean forward speed above this for NHC [m/s]
 };
 
 class MotionDetector {
@@ -37,7 +37,9 @@ class MotionDetector {
     double sum = 0.0;
     void add(double t, double value, double length);
     bool full(double length) const;
-    double mean() const { return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size()); }
+    double mean() const {
+      return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
+    }
   };
   MotionDetectorOptions options_;
   Window gyro_, speed_;

@@ -23,8 +23,8 @@ Vec3 arcDerivative(double phi) {
 
 }  // namespace
 
-OdometerPreintegration::OdometerPreintegration(const OdometerPreintegrationNoise& noise,
-                                               double s_v, double s_w)
+OdometerPreintegration::OdometerPreintegration(const OdometerPreintegrationNoise& noise, double s_v,
+                                               double s_w)
     : noise_(noise), s_v_lin_(s_v), s_w_lin_(s_w) {}
 
 void OdometerPreintegration::integrate(double dt, double v, double w) {
@@ -56,8 +56,8 @@ void OdometerPreintegration::integrate(double dt, double v, double w) {
   cov_ = A * cov_ * A.transpose() + Q;
 
   // dP/ds_w: the step depends on s_w through theta = k_w Theta and phi = k_w w dt.
-  dP_dsw_ += (skew(Vec3::UnitZ()) * Rz * arc(phi) * Theta_ + Rz * arcDerivative(phi) * w * dt) *
-             v * dt;
+  dP_dsw_ +=
+      (skew(Vec3::UnitZ()) * Rz * arc(phi) * Theta_ + Rz * arcDerivative(phi) * w * dt) * v * dt;
   P_ += step;
   Theta_ += w * dt;
   dt_sum_ += dt;
@@ -97,11 +97,11 @@ OdometerResidual OdometerPreintegration::evaluate(const Vec3& p_i, const Eigen::
                                                   const OdometerCalibration& c) const {
   const Mat3 R_i = q_i.toRotationMatrix(), R_j = q_j.toRotationMatrix();
   const Mat3 R_b_m = c.q_b_m.toRotationMatrix(), R_m_b = R_b_m.transpose();
-  const Mat3 A = R_i.transpose() * R_j;               // measured by the IMU states: R_bi_bj
-  const Vec3 d_b = R_i.transpose() * (p_j - p_i);     // p_bi_bj
+  const Mat3 A = R_i.transpose() * R_j;                   // measured by the IMU states: R_bi_bj
+  const Vec3 d_b = R_i.transpose() * (p_j - p_i);         // p_bi_bj
   const Vec3 z = d_b + (A - Mat3::Identity()) * c.p_b_m;  // R_b_m * (position of m_j in m_i)
   const Vec3 P_hat = P_ + dP_dsw_ * (c.s_w - s_w_lin_);
-  const Mat3 B = R_m_b * A * R_b_m;                   // R_mi_mj from the states
+  const Mat3 B = R_m_b * A * R_b_m;  // R_mi_mj from the states
   const Mat3 dR_hat = rotZ(yaw(c.s_w));
 
   OdometerResidual out;

@@ -23,10 +23,11 @@ namespace giocal {
 
 /// Noise of the integral measurement, per odometer sample interval.
 struct OdometerPreintegrationNoise {
-  double speed_sigma = 0.01;          // measured speed white noise [m/s]
-  double yaw_rate_sigma = 0.01745;    // measured yaw rate white noise [rad/s]
-  double lateral_speed_density = 0.01;  // slip and uneven ground, lateral and vertical [m/s/sqrt(Hz)]
-  double tilt_rate_density = 0.005;     // roll and pitch rate of uneven ground [rad/s/sqrt(Hz)]
+  double speed_sigma = 0.01;        // measured speed white noise [m/s]
+  double yaw_rate_sigma = 0.01745;  // measured yaw rate white noise [rad/s]
+  double lateral_speed_density =
+      0.01;                          // slip and uneven ground, lateral and vertical [m/s/sqrt(Hz)]
+  double tilt_rate_density = 0.005;  // roll and pitch rate of uneven ground [rad/s/sqrt(Hz)]
 };
 
 /// Residual [r_p (3), r_theta (3)] in m_k with Jacobians with respect to the right-perturbed
@@ -68,8 +69,8 @@ class OdometerPreintegration {
   OdometerPreintegrationNoise noise_;
   double s_v_lin_, s_w_lin_;
   double dt_sum_ = 0.0;
-  double Theta_ = 0.0;        // int w dt (measured)
-  Vec3 P_ = Vec3::Zero();     // int Rz(theta) e_y v dt at s_w_lin
+  double Theta_ = 0.0;     // int w dt (measured)
+  Vec3 P_ = Vec3::Zero();  // int Rz(theta) e_y v dt at s_w_lin
   Vec3 dP_dsw_ = Vec3::Zero();
   Eigen::Matrix<double, 6, 6> cov_ = Eigen::Matrix<double, 6, 6>::Zero();
 };

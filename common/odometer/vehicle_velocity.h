@@ -8,8 +8,8 @@
 namespace giocal {
 
 struct VehicleVelocity {
-  Eigen::Vector3d v_m;       // [m/s], x right, y forward, z up
-  Eigen::Vector3d w_m;       // angular rate of m in m [rad/s]
+  Eigen::Vector3d v_m;  // [m/s], x right, y forward, z up
+  Eigen::Vector3d w_m;  // angular rate of m in m [rad/s]
   // Jacobians of v_m and w_m with respect to the right-perturbed blocks.
   Eigen::Matrix3d dv_dv_n, dv_dq_n_b, dv_dbg, dv_dp_b_m, dv_dq_b_m;
   Eigen::Matrix3d dw_dbg, dw_dq_b_m;

@@ -39,12 +39,24 @@ struct LeapEntry {
 
 // IERS Bulletin C history of leap seconds since the GPS epoch; no leap second after 2017-01-01
 // had been announced when this table was written.
-constexpr std::array<LeapEntry, 18> kLeapTable{{{1981, 7, 1},  {1982, 7, 2},  {1983, 7, 3},
-                                                {1985, 7, 4},  {1988, 1, 5},  {1990, 1, 6},
-                                                {1991, 1, 7},  {1992, 7, 8},  {1993, 7, 9},
-                                                {1994, 7, 10}, {1996, 1, 11}, {1997, 7, 12},
-                                                {1999, 1, 13}, {2006, 1, 14}, {2009, 1, 15},
-                                                {2012, 7, 16}, {2015, 7, 17}, {2017, 1, 18}}};
+constexpr std::array<LeapEntry, 18> kLeapTable{{{1981, 7, 1},
+                                                {1982, 7, 2},
+                                                {1983, 7, 3},
+                                                {1985, 7, 4},
+                                                {1988, 1, 5},
+                                                {1990, 1, 6},
+                                                {1991, 1, 7},
+                                                {1992, 7, 8},
+                                                {1993, 7, 9},
+                                                {1994, 7, 10},
+                                                {1996, 1, 11},
+                                                {1997, 7, 12},
+                                                {1999, 1, 13},
+                                                {2006, 1, 14},
+                                                {2009, 1, 15},
+                                                {2012, 7, 16},
+                                                {2015, 7, 17},
+                                                {2017, 1, 18}}};
 
 double utcStartSeconds(const LeapEntry& e) {
   return static_cast<double>(daysSinceGpsEpoch(e.year, e.month, 1)) * kSecondsPerDay;
@@ -101,9 +113,7 @@ int leapSecondsAtGps(double gps_seconds) {
 
 double gpsFromUtcSeconds(double utc_seconds) { return utc_seconds + leapSecondsAtUtc(utc_seconds); }
 
-double utcFromGpsSeconds(double gps_seconds) {
-  return gps_seconds - leapSecondsAtGps(gps_seconds);
-}
+double utcFromGpsSeconds(double gps_seconds) { return gps_seconds - leapSecondsAtGps(gps_seconds); }
 
 std::string formatCalendar(const CalendarTime& c, int decimals) {
   // Round once on the total so that 59.9996 s becomes the next minute rather than "60.000".
@@ -112,7 +122,8 @@ std::string formatCalendar(const CalendarTime& c, int decimals) {
   const CalendarTime r = calendarFromGpsSeconds(t);
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%04d/%02d/%02d %02d:%02d:%0*.*f", r.year, r.month, r.day, r.hour,
-                r.minute, decimals + 3, decimals, std::fabs(r.second) < 0.5 / scale ? 0.0 : r.second);
+                r.minute, decimals + 3, decimals,
+                std::fabs(r.second) < 0.5 / scale ? 0.0 : r.second);
   return buf;
 }
 

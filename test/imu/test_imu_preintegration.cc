@@ -39,7 +39,8 @@ TEST(ImuPreintegration, AllJacobiansMatchNumericDifferentiation) {
   for (int trial = 0; trial < 10; ++trial) {
     ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), randomVec(rng, 0.05),
                           randomVec(rng, 0.01));
-    for (int k = 0; k < 50; ++k) pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
+    for (int k = 0; k < 50; ++k)
+      pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
     // States away from the linearization point, with biases that differ from it.
     const NavState si = randomState(rng), sj = randomState(rng);
     const ImuResidual res = pre.evaluate(si, sj);
@@ -52,13 +53,15 @@ TEST(ImuPreintegration, AllJacobiansMatchNumericDifferentiation) {
         {"ba_i", true, [](NavState& s, const Vec3& d) { s.b_a += d; }, res.J_ba_i},
         {"bg_i", true, [](NavState& s, const Vec3& d) { s.b_g += d; }, res.J_bg_i},
         {"p_j", false, [](NavState& s, const Vec3& d) { s.p_n_b += d; }, res.J_p_j},
-        {"q_j", false, [](NavState& s, const Vec3& d) { s.q_n_b = boxPlus(s.q_n_b, d); }, res.J_q_j},
+        {"q_j", false, [](NavState& s, const Vec3& d) { s.q_n_b = boxPlus(s.q_n_b, d); },
+         res.J_q_j},
         {"v_j", false, [](NavState& s, const Vec3& d) { s.v_n_b += d; }, res.J_v_j},
         {"ba_j", false, [](NavState& s, const Vec3& d) { s.b_a += d; }, res.J_ba_j},
         {"bg_j", false, [](NavState& s, const Vec3& d) { s.b_g += d; }, res.J_bg_j},
     };
     for (const auto& [name, on_i, perturb, J] : blocks) {
-      const auto fn = [&, on_i = on_i, perturb = perturb](const Eigen::VectorXd& d) -> Eigen::VectorXd {
+      const auto fn = [&, on_i = on_i,
+                       perturb = perturb](const Eigen::VectorXd& d) -> Eigen::VectorXd {
         NavState a = si, b = sj;
         perturb(on_i ? a : b, Vec3(d));
         return pre.evaluate(a, b).r;
@@ -122,8 +125,12 @@ TEST(ImuPreintegration, PredictMatchesFineStepStrapdownWithEarthRotation) {
   sd.g = f.frame.gravity_n();
   sd.w_ie = f.frame.omega_ie_n();
   // Smooth ground-robot-like motion: turning and accelerating while holding gravity.
-  sd.gyro = [](double t) { return Vec3(0.02 * std::sin(t), -0.03 * std::cos(2 * t), 0.5 * std::sin(0.7 * t)); };
-  sd.acc = [](double t) { return Vec3(0.3 * std::cos(t), 0.5 * std::sin(1.3 * t), 9.79 + 0.05 * std::sin(t)); };
+  sd.gyro = [](double t) {
+    return Vec3(0.02 * std::sin(t), -0.03 * std::cos(2 * t), 0.5 * std::sin(0.7 * t));
+  };
+  sd.acc = [](double t) {
+    return Vec3(0.3 * std::cos(t), 0.5 * std::sin(1.3 * t), 9.79 + 0.05 * std::sin(t));
+  };
   NavState s0;
   s0.p_n_b = {10, -5, 1};
   s0.v_n_b = {1.0, 0.5, 0.0};
@@ -155,8 +162,10 @@ TEST(ImuPreintegration, PredictMatchesFineStepStrapdownWithEarthRotation) {
 TEST(ImuPreintegration, BiasCorrectionIsFirstOrderAccurate) {
   std::mt19937 rng(5);
   Fixture f;
-  ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(), Vec3::Zero());
-  for (int k = 0; k < 100; ++k) pre.integrate(0.01, randomVec(rng, 0.8), randomVec(rng, 2.0) + Vec3(0, 0, 9.8));
+  ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(),
+                        Vec3::Zero());
+  for (int k = 0; k < 100; ++k)
+    pre.integrate(0.01, randomVec(rng, 0.8), randomVec(rng, 2.0) + Vec3(0, 0, 9.8));
   const Vec3 dba(0.02, -0.01, 0.015), dbg(0.003, -0.002, 0.004);
   ImuPreintegration re = pre;
   re.repropagate(dba, dbg);
@@ -213,11 +222,15 @@ TEST(ImuPreintegration, CovarianceMatchesMonteCarlo) {
 
 TEST(ImuPreintegration, RejectsBadSteps) {
   Fixture f;
-  ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(), Vec3::Zero());
+  ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(),
+                        Vec3::Zero());
   EXPECT_THROW(pre.integrate(0.0, Vec3::Zero(), Vec3::Zero()), std::invalid_argument);
   EXPECT_THROW(pre.integrate(-0.01, Vec3::Zero(), Vec3::Zero()), std::invalid_argument);
   EXPECT_THROW(pre.integrate(0.01, Vec3(NAN, 0, 0), Vec3::Zero()), std::invalid_argument);
-  EXPECT_THROW(pre.integrateSamples({{0.0, Vec3::Zero(), Vec3::Zero()}, {1.0, Vec3::Zero(), Vec3::Zero()}}, 0.5, 2.0), std::invalid_argument);
+  EXPECT_THROW(
+      pre.integrateSamples({{0.0, Vec3::Zero(), Vec3::Zero()}, {1.0, Vec3::Zero(), Vec3::Zero()}},
+                           0.5, 2.0),
+      std::invalid_argument);
 }
 
 }  // namespace

@@ -43,7 +43,8 @@ TEST(ImuCsv, RoundTrip) {
   }
   // No temporary file is left beside the output.
   int files = 0;
-  for (const auto& e : std::filesystem::directory_iterator(dir.path())) files += e.is_regular_file();
+  for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    files += e.is_regular_file();
   EXPECT_EQ(files, 1);
 }
 

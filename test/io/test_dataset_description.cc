@@ -67,7 +67,8 @@ TEST(DatasetDescription, MissingKeyAndBadValuesNameTheLine) {
     return s.replace(pos, from.size(), to);
   };
   expectError(replace("  speed_sigma:", "  speed_sigmaa:"), "missing key 'odometer.speed_sigma'");
-  expectError(replace("gyro_noise_density: 0.0058", "gyro_noise_density: fast"), "must be a number");
+  expectError(replace("gyro_noise_density: 0.0058", "gyro_noise_density: fast"),
+              "must be a number");
   expectError(replace("gyro_noise_density: 0.0058", "gyro_noise_density: -1"), "outside");
   expectError(replace("gyro_noise_density: 0.0058", "gyro_noise_density: .nan"), "not finite");
   expectError(replace("p_b_g: [0.1, -0.2, 0.5]", "p_b_g: [0.1, -0.2]"), "list of 3 numbers");
@@ -89,8 +90,9 @@ TEST(TruthCalibration, RoundTripAndConsistency) {
   EXPECT_LT(r.calib.q_b_m.angularDistance(t.calib.q_b_m), 1e-12);
   EXPECT_LT((r.p_b_g - t.p_b_g).norm(), 1e-15);
   // q_b_m and rpy_b_m_deg that disagree are rejected.
-  dir.write("bad.yaml",
-            "s_v: 0\ns_w: 0\np_b_m: [0,0,0]\nq_b_m: [1,0,0,0]\nrpy_b_m_deg: [0,0,10]\np_b_g: [0,0,0]\n");
+  dir.write(
+      "bad.yaml",
+      "s_v: 0\ns_w: 0\np_b_m: [0,0,0]\nq_b_m: [1,0,0,0]\nrpy_b_m_deg: [0,0,10]\np_b_g: [0,0,0]\n");
   EXPECT_THROW(readTruthCalibration(dir.file("bad.yaml")), DataError);
   dir.write("noq.yaml", "s_v: 0\ns_w: 0\np_b_m: [0,0,0]\np_b_g: [0,0,0]\n");
   EXPECT_THROW(readTruthCalibration(dir.file("noq.yaml")), DataError);

@@ -8,7 +8,8 @@ namespace giocal {
 namespace {
 
 TEST(ModelOptions, ShippedConfigEqualsTheDefaults) {
-  const ModelOptions shipped = readModelOptions(std::string(GIOCAL_SOURCE_DIR) + "/config/giocal.yaml");
+  const ModelOptions shipped =
+      readModelOptions(std::string(GIOCAL_SOURCE_DIR) + "/config/giocal.yaml");
   const ModelOptions defaults;
   EXPECT_DOUBLE_EQ(shipped.motion.window_s, defaults.motion.window_s);
   EXPECT_NEAR(shipped.motion.zupt_max_gyro, defaults.motion.zupt_max_gyro, 1e-15);

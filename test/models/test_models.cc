@@ -1,9 +1,7 @@
+#include <ceres/ceres.h>
 #include <gtest/gtest.h>
 
-#include <ceres/ceres.h>
-
 #include <Eigen/LU>
-
 #include <memory>
 #include <random>
 
@@ -234,7 +232,8 @@ TEST(MeasurementModels, IteratedFilterAndCeresReachTheSameEstimate) {
   auto cost = [&](std::vector<Eigen::VectorXd>& v) {
     double c = 0;
     for (const std::shared_ptr<const MeasurementModel>& m :
-         {std::shared_ptr<const MeasurementModel>(odo), std::shared_ptr<const MeasurementModel>(prior)}) {
+         {std::shared_ptr<const MeasurementModel>(odo),
+          std::shared_ptr<const MeasurementModel>(prior)}) {
       ModelCostFunction cf(m);
       Eigen::VectorXd res(m->residualSize());
       cf.Evaluate(test::pointers(v).data(), res.data(), nullptr);
@@ -247,10 +246,10 @@ TEST(MeasurementModels, IteratedFilterAndCeresReachTheSameEstimate) {
   double moved = 0.0;
   for (size_t k = 0; k < x.size(); ++k) {
     const StateBlock& b = blocks[k];
-    Eigen::VectorXd diff = b.kind == BlockKind::kRotation
-                               ? Eigen::VectorXd(boxMinus(quatFromWxyz(x[k].data()),
-                                                          quatFromWxyz(y[k].data())))
-                               : Eigen::VectorXd(x[k] - y[k]);
+    Eigen::VectorXd diff =
+        b.kind == BlockKind::kRotation
+            ? Eigen::VectorXd(boxMinus(quatFromWxyz(x[k].data()), quatFromWxyz(y[k].data())))
+            : Eigen::VectorXd(x[k] - y[k]);
     EXPECT_LT(diff.norm(), 1e-8) << b.name;
     moved += (b.kind == BlockKind::kRotation ? 0.0 : (x[k] - x0[k]).norm());
   }

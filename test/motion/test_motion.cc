@@ -14,9 +14,11 @@ TEST(MotionDetector, StaticNeedsAFullQuietWindow) {
   std::mt19937 rng(4);
   std::normal_distribution<double> noise(0.0, 0.005 * kDeg);  // bias-compensated MEMS noise
   EXPECT_FALSE(d.isStatic());
-  for (int k = 0; k < 50; ++k) d.addImu(k * 0.01, Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+  for (int k = 0; k < 50; ++k)
+    d.addImu(k * 0.01, Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
   EXPECT_FALSE(d.isStatic()) << "half a window is not enough";
-  for (int k = 50; k < 101; ++k) d.addImu(k * 0.01, Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
+  for (int k = 50; k < 101; ++k)
+    d.addImu(k * 0.01, Eigen::Vector3d(noise(rng), noise(rng), noise(rng)));
   EXPECT_TRUE(d.isStatic());
   // A slow turn of 0.1 deg/s is motion.
   for (int k = 101; k < 250; ++k) d.addImu(k * 0.01, Eigen::Vector3d(0, 0, 0.1 * kDeg));

@@ -76,9 +76,11 @@ TEST(VehicleVelocity, JacobiansMatchNumericDifferentiation) {
       };
     };
     const Eigen::Matrix3d Z = Eigen::Matrix3d::Zero();
-    const std::vector<std::pair<Eigen::Matrix3d, Eigen::Matrix3d>> J{
-        {vv.dv_dv_n, Z}, {vv.dv_dq_n_b, Z}, {vv.dv_dbg, vv.dw_dbg}, {vv.dv_dp_b_m, Z},
-        {vv.dv_dq_b_m, vv.dw_dq_b_m}};
+    const std::vector<std::pair<Eigen::Matrix3d, Eigen::Matrix3d>> J{{vv.dv_dv_n, Z},
+                                                                     {vv.dv_dq_n_b, Z},
+                                                                     {vv.dv_dbg, vv.dw_dbg},
+                                                                     {vv.dv_dp_b_m, Z},
+                                                                     {vv.dv_dq_b_m, vv.dw_dq_b_m}};
     for (int b = 0; b < 5; ++b) {
       Eigen::MatrixXd analytic(6, 3);
       analytic << J[b].first, J[b].second;
@@ -108,7 +110,8 @@ TEST(OdometerPreintegration, JacobiansMatchNumericDifferentiation) {
   OdometerPreintegrationNoise noise;
   for (int trial = 0; trial < 20; ++trial) {
     OdometerPreintegration pre(noise, 0.01, -0.02);
-    for (int k = 0; k < 50; ++k) pre.integrate(0.02, 1.0 + randomVec(rng, 0.5).x(), randomVec(rng, 0.8).x());
+    for (int k = 0; k < 50; ++k)
+      pre.integrate(0.02, 1.0 + randomVec(rng, 0.5).x(), randomVec(rng, 0.8).x());
     const Vec3 p_i = randomVec(rng, 10), p_j = randomVec(rng, 10);
     const Quat q_i(expSO3(randomVec(rng, 3))), q_j(expSO3(randomVec(rng, 3)));
     const OdometerCalibration c = randomCalibration(rng);
@@ -118,22 +121,39 @@ TEST(OdometerPreintegration, JacobiansMatchNumericDifferentiation) {
       Quat qi = q_i, qj = q_j;
       OdometerCalibration cc = c;
       switch (block) {
-        case 0: pi += Vec3(d); break;
-        case 1: qi = boxPlus(q_i, Vec3(d)); break;
-        case 2: pj += Vec3(d); break;
-        case 3: qj = boxPlus(q_j, Vec3(d)); break;
-        case 4: cc.p_b_m += Vec3(d); break;
-        case 5: cc.q_b_m = boxPlus(c.q_b_m, Vec3(d)); break;
-        case 6: cc.s_v += d[0]; break;
-        case 7: cc.s_w += d[0]; break;
+        case 0:
+          pi += Vec3(d);
+          break;
+        case 1:
+          qi = boxPlus(q_i, Vec3(d));
+          break;
+        case 2:
+          pj += Vec3(d);
+          break;
+        case 3:
+          qj = boxPlus(q_j, Vec3(d));
+          break;
+        case 4:
+          cc.p_b_m += Vec3(d);
+          break;
+        case 5:
+          cc.q_b_m = boxPlus(c.q_b_m, Vec3(d));
+          break;
+        case 6:
+          cc.s_v += d[0];
+          break;
+        case 7:
+          cc.s_w += d[0];
+          break;
       }
       return pre.evaluate(pi, qi, pj, qj, cc).r;
     };
-    const std::vector<Eigen::MatrixXd> analytic{res.J_p_i, res.J_q_i, res.J_p_j, res.J_q_j,
+    const std::vector<Eigen::MatrixXd> analytic{res.J_p_i,   res.J_q_i,   res.J_p_j, res.J_q_j,
                                                 res.J_p_b_m, res.J_q_b_m, res.J_s_v, res.J_s_w};
     for (int b = 0; b < 8; ++b) {
       const int n = b < 6 ? 3 : 1;
-      const auto num = test::numericJacobian([&](const Eigen::VectorXd& d) { return eval(b, d); }, n);
+      const auto num =
+          test::numericJacobian([&](const Eigen::VectorXd& d) { return eval(b, d); }, n);
       EXPECT_LT(test::relativeDifference(analytic[b], num), 1e-6) << "block " << b;
     }
   }
@@ -178,11 +198,13 @@ TEST(OdometerPreintegration, KnownCircleWithExtrinsicAndScalesIsExact) {
   const auto [p_i, q_i] = imuPose(pc.path, pc.poses[0].first, pc.poses[0].second, pc.truth);
   const auto [p_j, q_j] = imuPose(pc.path, pc.poses[1].first, pc.poses[1].second, pc.truth);
   const OdometerResidual r = pre.evaluate(p_i, q_i, p_j, q_j, pc.truth);
-  EXPECT_LT(r.r.head<3>().norm(), 1e-6);   // limited only by the reference path's integration
+  EXPECT_LT(r.r.head<3>().norm(), 1e-6);  // limited only by the reference path's integration
   EXPECT_LT(r.r.tail<3>().norm(), 1e-10);
   // The paper's (dp, dq) in b equal the true relative IMU pose.
   EXPECT_LT((pre.deltaP_b(pc.truth) - q_i.conjugate() * (p_j - p_i)).norm(), 1e-6);
-  EXPECT_LT(logSO3(pre.deltaR_b(pc.truth).transpose() * (q_i.conjugate() * q_j).toRotationMatrix()).norm(), 1e-10);
+  EXPECT_LT(logSO3(pre.deltaR_b(pc.truth).transpose() * (q_i.conjugate() * q_j).toRotationMatrix())
+                .norm(),
+            1e-10);
 }
 
 TEST(OdometerPreintegration, KnownVaryingPathAndRelinearizedScales) {

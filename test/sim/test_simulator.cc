@@ -50,7 +50,8 @@ double worstPositionErrorOver60s(double imu_rate_hz) {
   for (int k = 0; k < 60 * per_second; k += per_second) {
     ImuPreintegration pre(ImuNoise{}, logs.frame.gravity_n(s.p_n_b), logs.frame.omega_ie_n(),
                           Vec3::Zero(), Vec3::Zero());
-    const std::vector<ImuSample> window(logs.imu.begin() + k, logs.imu.begin() + k + per_second + 1);
+    const std::vector<ImuSample> window(logs.imu.begin() + k,
+                                        logs.imu.begin() + k + per_second + 1);
     pre.integrateSamples(window, window.front().t, window.back().t);
     s = pre.predict(s);
     const NavState& t = logs.truth_n[static_cast<size_t>(k + per_second)];
@@ -64,7 +65,8 @@ double worstPositionErrorOver60s(double imu_rate_hz) {
 }
 
 TEST(Simulator, NoiseFreeImuIntegratesToTheTruthOver60s) {
-  // Turns, a figure eight, a turn in place and 1 m hills: within 1 cm at 100 Hz (measured 2.8 mm)...
+  // Turns, a figure eight, a turn in place and 1 m hills: within 1 cm at 100 Hz (measured 2.8
+  // mm)...
   EXPECT_LT(worstPositionErrorOver60s(100.0), 0.01);
   // ...and the remainder is the integrator's sampling (coning) error, which falls with dt^2: the
   // simulated truth itself is exact (measured 0.17 mm at 400 Hz).
@@ -79,9 +81,9 @@ TEST(Simulator, NoiseFreeOdometerIsTheTrueMotionOfTheVehicleFrame) {
   const int imu_per_odo = static_cast<int>(cfg.imu.rate_hz / cfg.odometer.rate_hz);
   for (size_t k = 0; k < logs.odom.size(); ++k) {
     // measured = true / (1 + s).
-    worst_meas = std::max({worst_meas,
-                           std::abs(logs.odom[k].v * (1 + cfg.truth.s_v) - logs.true_speed[k]),
-                           std::abs(logs.odom[k].w * (1 + cfg.truth.s_w) - logs.true_yaw_rate[k])});
+    worst_meas =
+        std::max({worst_meas, std::abs(logs.odom[k].v * (1 + cfg.truth.s_v) - logs.true_speed[k]),
+                  std::abs(logs.odom[k].w * (1 + cfg.truth.s_w) - logs.true_yaw_rate[k])});
     // The true speed and yaw rate equal the motion of m derived from the IMU truth and the
     // extrinsic (an independent path through common/): no lateral or vertical velocity.
     const size_t i = k * static_cast<size_t>(imu_per_odo);
@@ -100,7 +102,8 @@ TEST(Simulator, NoiseFreeOdometerIsTheTrueMotionOfTheVehicleFrame) {
 }
 
 TEST(Simulator, NoisyPresetHasTheConfiguredErrorLevels) {
-  sim::SimConfig cfg = sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+  sim::SimConfig cfg =
+      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
   const sim::SimulatedLogs noisy = sim::simulate(cfg, 5);
   cfg.odometer.speed_sigma = cfg.odometer.yaw_rate_sigma_deg_s = 0.0;
   const sim::SimulatedLogs clean = sim::simulate(cfg, 5);
@@ -127,7 +130,8 @@ std::string slurp(const std::string& path) {
 
 TEST(Simulator, SameSeedGivesIdenticalFilesAndTheReadersAcceptThem) {
   test::TempDir dir;
-  const sim::SimConfig cfg = sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+  const sim::SimConfig cfg =
+      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
   sim::writeDataset(sim::simulate(cfg, 7), dir.file("a"));
   sim::writeDataset(sim::simulate(cfg, 7), dir.file("b"));
   sim::writeDataset(sim::simulate(cfg, 8), dir.file("c"));

@@ -27,7 +27,8 @@ TEST(GpsTime, CalendarRoundTripOverDecades) {
     EXPECT_GE(wt.tow, 0.0);
     EXPECT_LT(wt.tow, kSecondsPerWeek);
   }
-  const CalendarTime leap_day = calendarFromGpsSeconds(gpsSecondsFromCalendar({2024, 2, 29, 23, 59, 59.5}));
+  const CalendarTime leap_day =
+      calendarFromGpsSeconds(gpsSecondsFromCalendar({2024, 2, 29, 23, 59, 59.5}));
   EXPECT_EQ(leap_day.month, 2);
   EXPECT_EQ(leap_day.day, 29);
   EXPECT_NEAR(leap_day.second, 59.5, 1e-9);
