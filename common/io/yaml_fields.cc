@@ -113,33 +113,24 @@ std::vector<std::string> YamlFields::textList(const std::string& key) const {
   return out;
 }
 
-Eigen::Vector4d YamlFields::vector4(const std::string& key) const {
+Eigen::VectorXd YamlFields::numberList(const std::string& key, int n) const {
   const YAML::Node node = find(key);
-  if (!node.IsSequence() || node.size() != 4) {
-    throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 4 numbers");
+  const std::string what = "'" + key + "' must be a list of " + std::to_string(n) + " finite numbers";
+  if (!node.IsSequence() || static_cast<int>(node.size()) != n) {
+    throw DataError(path_, lineOf(node), what);
   }
-  Eigen::Vector4d v;
-  for (int i = 0; i < 4; ++i) {
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) {
     if (!YAML::convert<double>::decode(node[i], v[i]) || !std::isfinite(v[i])) {
-      throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 4 finite numbers");
+      throw DataError(path_, lineOf(node), what);
     }
   }
   return v;
 }
 
-Eigen::Vector3d YamlFields::vector3(const std::string& key) const {
-  const YAML::Node node = find(key);
-  if (!node.IsSequence() || node.size() != 3) {
-    throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 3 numbers");
-  }
-  Eigen::Vector3d v;
-  for (int i = 0; i < 3; ++i) {
-    if (!YAML::convert<double>::decode(node[i], v[i]) || !std::isfinite(v[i])) {
-      throw DataError(path_, lineOf(node), "'" + key + "' must be a list of 3 finite numbers");
-    }
-  }
-  return v;
-}
+Eigen::Vector4d YamlFields::vector4(const std::string& key) const { return numberList(key, 4); }
+
+Eigen::Vector3d YamlFields::vector3(const std::string& key) const { return numberList(key, 3); }
 
 Eigen::Vector3d YamlFields::vector3(const std::string& key, double min, double max) const {
   const Eigen::Vector3d v = vector3(key);

@@ -31,6 +31,8 @@ class YamlFields {
   Eigen::Vector3d vector3(const std::string& key) const;
   Eigen::Vector3d vector3(const std::string& key, double min, double max) const;
   Eigen::Vector4d vector4(const std::string& key) const;
+  /// A list of exactly n finite numbers.
+  Eigen::VectorXd numberList(const std::string& key, int n) const;
 
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 

@@ -71,7 +71,7 @@ TEST(DatasetDescription, MissingKeyAndBadValuesNameTheLine) {
               "must be a number");
   expectError(replace("gyro_noise_density: 0.0058", "gyro_noise_density: -1"), "outside");
   expectError(replace("gyro_noise_density: 0.0058", "gyro_noise_density: .nan"), "not finite");
-  expectError(replace("p_b_g: [0.1, -0.2, 0.5]", "p_b_g: [0.1, -0.2]"), "list of 3 numbers");
+  expectError(replace("p_b_g: [0.1, -0.2, 0.5]", "p_b_g: [0.1, -0.2]"), "list of 3 finite numbers");
   expectError(replace("base_position_ecef: [", "base_position_ecef: [1, 2, 3] #"), "ECEF");
   expectError(replace("files:", "files: [\n"), "YAML syntax error");
 }
