@@ -1,0 +1,33 @@
+#include "common/gnss/observation.h"
+
+#include <cmath>
+#include <string>
+
+namespace giocal {
+
+const SignalObs* SatObs::bestOnBand(char band) const {
+  // Attributes in order of preference: civil/open codes first, then semi-codeless, then the rest.
+  static const std::string kOrder = "CWPLSXQIDBZAM";
+  const SignalObs* best = nullptr;
+  int best_rank = 1 << 20;
+  for (const SignalObs& s : signals) {
+    if (s.band != band || std::isnan(s.P)) continue;
+    const auto pos = kOrder.find(s.attr);
+    const int rank =
+        (std::isnan(s.L) ? 100 : 0) + static_cast<int>(pos == std::string::npos ? 50 : pos);
+    if (rank < best_rank) {
+      best_rank = rank;
+      best = &s;
+    }
+  }
+  return best;
+}
+
+const SatObs* ObsEpoch::find(const SatId& sat) const {
+  for (const SatObs& s : sats) {
+    if (s.sat == sat) return &s;
+  }
+  return nullptr;
+}
+
+}  // namespace giocal

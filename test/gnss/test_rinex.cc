@@ -1,0 +1,180 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs.h"
+#include "common/io/data_error.h"
+#include "common/time/gps_time.h"
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+const std::string kData = std::string(GIOCAL_SOURCE_DIR) + "/data/real/";
+const std::string kGsi = kData + "gsi-static-0759-3040/";
+const std::string kMosaic = kData + "mosaic-static-nagoya/";
+
+TEST(RinexObs, Version2GsiFile) {
+  const ObsData d = readRinexObs(kGsi + "07590920.05o");
+  EXPECT_DOUBLE_EQ(d.header.version, 2.10);
+  EXPECT_EQ(d.header.marker, "0759");
+  EXPECT_NEAR(d.header.approx_position.x(), -3976219.5082, 1e-9);
+  EXPECT_DOUBLE_EQ(d.header.interval, 30.0);
+  ASSERT_EQ(d.epochs.size(), 120u);
+  const ObsEpoch& e0 = d.epochs.front();
+  EXPECT_DOUBLE_EQ(e0.t, gpsSecondsFromCalendar({2005, 4, 2, 0, 0, 0.0}));
+  ASSERT_EQ(e0.sats.size(), 8u);
+  EXPECT_EQ(e0.sats[0].sat.str(), "G03");
+  // First record: L1 55923622.160, C1 24767686.375, L2 43647388.242 (LLI 4 = AS on), P2
+  // 24767684.822.
+  const SignalObs* l1 = e0.sats[0].bestOnBand('1');
+  const SignalObs* l2 = e0.sats[0].bestOnBand('2');
+  ASSERT_TRUE(l1 && l2);
+  EXPECT_DOUBLE_EQ(l1->L, 55923622.160);
+  EXPECT_DOUBLE_EQ(l1->P, 24767686.375);
+  EXPECT_DOUBLE_EQ(l2->L, 43647388.242);
+  EXPECT_DOUBLE_EQ(l2->P, 24767684.822);
+  EXPECT_EQ(l2->attr, 'W');
+  EXPECT_EQ(l2->lli, 4);
+  EXPECT_DOUBLE_EQ(d.epochs[1].t - e0.t, 30.0);
+}
+
+TEST(RinexObs, Version3MosaicFile) {
+  const ObsData d = readRinexObs(kMosaic + "rover.obs");
+  EXPECT_DOUBLE_EQ(d.header.version, 3.04);
+  ASSERT_EQ(d.epochs.size(), 301u);
+  EXPECT_EQ(d.header.obs_types.at('G').size(), 17u);
+  EXPECT_EQ(d.header.obs_types.at('G')[1], "C1C");
+  EXPECT_EQ(d.header.obs_types.at('E').size(), 13u);
+  EXPECT_EQ(d.header.phase_shift.count({'G', "L2L"}), 1u);
+  // No GLONASS or SBAS satellites are kept; GPS, Galileo, BeiDou and QZSS are.
+  int per_sys[128] = {};
+  for (const auto& s : d.epochs.front().sats) per_sys[static_cast<int>(s.sat.sys)]++;
+  EXPECT_EQ(per_sys['R'], 0);
+  EXPECT_GT(per_sys['G'], 5);
+  EXPECT_GT(per_sys['E'], 3);
+  EXPECT_GT(per_sys['C'], 3);
+  for (const auto& s : d.epochs.front().sats) {
+    for (const auto& sig : s.signals) {
+      if (!std::isnan(sig.P)) {
+        EXPECT_GT(sig.P, 1.5e7) << s.sat.str();
+        EXPECT_LT(sig.P, 4.5e7) << s.sat.str();
+      }
+    }
+  }
+  const SatObs* first_gps = nullptr;
+  for (const auto& s : d.epochs.front().sats) {
+    if (!first_gps && s.sat.sys == GnssSystem::kGps) first_gps = &s;
+  }
+  ASSERT_NE(first_gps, nullptr);
+  const SatObs& g = *first_gps;
+  ASSERT_NE(g.bestOnBand('1'), nullptr);
+  EXPECT_EQ(g.bestOnBand('1')->attr, 'C');
+  EXPECT_FALSE(std::isnan(g.bestOnBand('1')->D));
+  EXPECT_FALSE(std::isnan(g.bestOnBand('1')->S));
+}
+
+TEST(RinexNav, Version2AndVersion3) {
+  const NavData n2 = readRinexNav(kGsi + "07590920.05n");
+  EXPECT_TRUE(n2.has_gps_iono);
+  EXPECT_DOUBLE_EQ(n2.gps_iono[0], 1.1180e-08);
+  EXPECT_DOUBLE_EQ(n2.gps_iono[4], 8.8060e+04);
+  ASSERT_GT(n2.ephemerides.size(), 10u);
+  for (const auto& e : n2.ephemerides) {
+    EXPECT_EQ(e.sat.sys, GnssSystem::kGps);
+    EXPECT_NEAR(e.sqrt_a, 5153.7, 10.0);
+    EXPECT_LT(std::abs(e.toe - e.toc), 7200.0);
+  }
+  const NavData n3 = readRinexNav(kMosaic + "base.nav");
+  EXPECT_DOUBLE_EQ(n3.gps_iono[0], 1.8626e-08);
+  int g = 0, e = 0, c = 0, j = 0;
+  for (const auto& eph : n3.ephemerides) {
+    g += eph.sat.sys == GnssSystem::kGps;
+    e += eph.sat.sys == GnssSystem::kGalileo;
+    c += eph.sat.sys == GnssSystem::kBeidou;
+    j += eph.sat.sys == GnssSystem::kQzss;
+  }
+  EXPECT_EQ(g, 13);
+  EXPECT_EQ(e, 67);
+  EXPECT_EQ(c, 32);
+  EXPECT_EQ(j, 3);
+  EXPECT_EQ(n3.skipped_records, 19);  // GLONASS
+  // G05's first record: toc 2024-06-24 10:00:00, af0 -1.774230040610E-04, toe 122400 s of week
+  // 2320.
+  const Ephemeris& g05 = n3.ephemerides.front();
+  EXPECT_EQ(g05.sat.str(), "G05");
+  EXPECT_DOUBLE_EQ(g05.af0, -1.774230040610E-04);
+  EXPECT_DOUBLE_EQ(g05.toe, 2320 * 604800.0 + 122400.0);
+  EXPECT_DOUBLE_EQ(g05.toc, gpsSecondsFromCalendar({2024, 6, 24, 10, 0, 0.0}));
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Expects a DataError whose message names the file and a line > 0.
+template <typename Fn>
+void expectFileLineError(Fn fn, const std::string& path, const std::string& what) {
+  try {
+    fn();
+    FAIL() << "accepted: " << what;
+  } catch (const DataError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_GT(e.line(), 0) << e.what();
+    EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what() << " / " << what;
+  }
+}
+
+TEST(RinexObs, TruncatedAndMalformedFilesAreReported) {
+  test::TempDir dir;
+  for (const std::string& src : {kGsi + "07590920.05o", kMosaic + "rover.obs"}) {
+    const std::string text = slurp(src);
+    // Cut in the middle of an epoch's records.
+    const std::string cut = dir.write("cut.obs", text.substr(0, text.size() / 2));
+    expectFileLineError([&] { readRinexObs(cut); }, cut, "truncated");
+    // No header end.
+    const std::string nohdr =
+        dir.write("nohdr.obs", text.substr(0, text.find("END OF HEADER") - 10));
+    EXPECT_THROW(readRinexObs(nohdr), DataError);
+    // A letter inside a number.
+    std::string bad = text;
+    const size_t at = bad.find(".", bad.find("END OF HEADER") + 200);
+    bad[at - 2] = 'x';
+    const std::string badp = dir.write("bad.obs", bad);
+    expectFileLineError([&] { readRinexObs(badp); }, badp, "bad");
+  }
+  // Time going backwards: swap the first two epochs of the GSI file.
+  const std::string text = slurp(kGsi + "07590920.05o");
+  std::string swapped = text;
+  const size_t e1 = swapped.find(" 05  4  2  0  0  0.0000000");
+  swapped.replace(e1, 26, " 05  4  2  0  1  0.0000000");
+  const std::string sp = dir.write("swap.obs", swapped);
+  expectFileLineError([&] { readRinexObs(sp); }, sp, "backwards");
+  // Not a RINEX file at all, and an empty one.
+  const std::string junk = dir.write("junk.obs", "hello\nworld\n");
+  EXPECT_THROW(readRinexObs(junk), DataError);
+  EXPECT_THROW(readRinexObs(dir.write("empty.obs", "")), DataError);
+}
+
+TEST(RinexNav, TruncatedAndMalformedFilesAreReported) {
+  test::TempDir dir;
+  const std::string text = slurp(kMosaic + "base.nav");
+  const size_t body = text.find("END OF HEADER");
+  const std::string cut = dir.write("cut.nav", text.substr(0, text.find("\n", body + 400) + 1));
+  expectFileLineError([&] { readRinexNav(cut); }, cut, "truncated");
+  std::string bad = text;
+  bad[bad.find("E-", body) - 3] = '#';
+  const std::string badp = dir.write("bad.nav", bad);
+  expectFileLineError([&] { readRinexNav(badp); }, badp, "bad number");
+  const std::string obs_as_nav = dir.write("x.nav", slurp(kMosaic + "rover.obs").substr(0, 2000));
+  expectFileLineError([&] { readRinexNav(obs_as_nav); }, obs_as_nav, "not a RINEX navigation");
+}
+
+}  // namespace
+}  // namespace giocal
