@@ -61,7 +61,9 @@ Eigen::Vector3d keplerPosition(const Ephemeris& eph, double t, double& E_out) {
     const double Om = eph.omega0 + eph.omega_dot * tk - c.omega_e * toe_sow;
     const Eigen::Vector3d p_gk(x * std::cos(Om) - y * std::cos(i) * std::sin(Om),
                                x * std::sin(Om) + y * std::cos(i) * std::cos(Om), y * std::sin(i));
-    const double deg5 = -5.0 * M_PI / 180.0;
+    // The ICD's R_Z(omega_e tk) R_X(-5 deg) are frame (passive) rotations: active rotations by
+    // -omega_e tk about z and +5 deg about x.
+    const double deg5 = 5.0 * M_PI / 180.0;
     return expSO3(Eigen::Vector3d(0, 0, -c.omega_e * tk)) * expSO3(Eigen::Vector3d(deg5, 0, 0)) *
            p_gk;
   }

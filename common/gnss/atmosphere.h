@@ -1,0 +1,24 @@
+// Elevation and azimuth, and the broadcast atmosphere models: Saastamoinen troposphere with a
+// standard atmosphere and the Klobuchar ionosphere.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+
+#include "common/geodesy/wgs84.h"
+
+namespace giocal {
+
+/// Elevation and azimuth [rad] of a satellite seen from a receiver (both ECEF).
+void elevationAzimuth(const Eigen::Vector3d& rx_e, const Eigen::Vector3d& sat_e, double& el,
+                      double& az);
+
+/// Saastamoinen zenith delay with a standard atmosphere (1013.25 hPa, 15 C, 70 % humidity at sea
+/// level) mapped by 1/cos(zenith) [m].
+double tropoSaastamoinen(const Geodetic& rx, double el);
+
+/// Klobuchar delay on GPS L1 [m] for GPS time t; scale by (f_L1/f)^2 for other frequencies.
+double ionoKlobuchar(const std::array<double, 8>& coeffs, double t, const Geodetic& rx, double el,
+                     double az);
+
+}  // namespace giocal

@@ -1,0 +1,99 @@
+#include "common/gnss/broadcast_orbits.h"
+
+#include <cmath>
+
+#include "common/geodesy/wgs84.h"
+#include "common/math/so3.h"
+
+namespace giocal {
+
+namespace {
+
+// Largest |t - toe| for which a broadcast ephemeris is used [s].
+double validity(GnssSystem sys) {
+  switch (sys) {
+    case GnssSystem::kGalileo:
+      return 14400.0;
+    case GnssSystem::kBeidou:
+      return 21600.0;
+    default:
+      return 7200.0 + 60.0;  // GPS/QZSS: fit interval 4 h centred on toe
+  }
+}
+
+}  // namespace
+
+double groupDelay(const Ephemeris& eph, char band) {
+  const double f = carrierFrequency(eph.sat.sys, band);
+  switch (eph.sat.sys) {
+    case GnssSystem::kGps:
+    case GnssSystem::kQzss: {
+      // The broadcast clock is referenced to the L1/L2 ionosphere-free combination; TGD is the L1
+      // delay, and other bands scale with (f1/f)^2.
+      const double f1 = carrierFrequency(eph.sat.sys, '1');
+      return f > 0.0 ? eph.tgd * (f1 / f) * (f1 / f) : eph.tgd;
+    }
+    case GnssSystem::kGalileo: {
+      // I/NAV clocks are referenced to E1/E5b (BGD E5b/E1 in tgd), F/NAV to E1/E5a (tgd2).
+      const bool fnav = (eph.data_source & 2) != 0;
+      const double bgd = fnav ? eph.tgd2 : eph.tgd;
+      const double f1 = carrierFrequency(eph.sat.sys, '1');
+      return f > 0.0 ? bgd * (f1 / f) * (f1 / f) : bgd;
+    }
+    case GnssSystem::kBeidou:
+      // Clocks are referenced to B3I; TGD1 is the B1I delay, TGD2 the B2I delay.
+      if (band == '2') return eph.tgd;
+      if (band == '7') return eph.tgd2;
+      return 0.0;
+    default:
+      return 0.0;
+  }
+}
+
+BroadcastOrbits::BroadcastOrbits(const NavData& nav) : nav_(nav) {
+  for (const Ephemeris& e : nav_.ephemerides) by_sat_[e.sat].push_back(&e);
+}
+
+const Ephemeris* BroadcastOrbits::select(const SatId& sat, double t) const {
+  const auto it = by_sat_.find(sat);
+  if (it == by_sat_.end()) return nullptr;
+  const Ephemeris* best = nullptr;
+  double best_dt = validity(sat.sys);
+  for (const Ephemeris* e : it->second) {
+    if (e->health != 0) continue;
+    // Galileo: prefer I/NAV (E1/E5b) records; F/NAV only when no I/NAV record is near.
+    const double penalty =
+        (sat.sys == GnssSystem::kGalileo && (e->data_source & 5) == 0) ? 3600.0 : 0.0;
+    const double dt = std::abs(t - e->toe) + penalty;
+    if (dt <= best_dt) {
+      best_dt = dt;
+      best = e;
+    }
+  }
+  return best;
+}
+
+std::optional<SatelliteAtReception> BroadcastOrbits::atReception(const SatId& sat, double t_rx,
+                                                                 double range, char band) const {
+  const Ephemeris* eph = select(sat, t_rx);
+  if (!eph) return std::nullopt;
+  // Transmission time: the pseudo-range gives the travel time including both clocks; the
+  // satellite clock is then removed (the receiver clock error is common to all and small
+  // enough for the orbit: 1 ms of receiver clock moves a satellite by 4 m, handled by the
+  // caller's iteration on the clock).
+  double t_tx = t_rx - range / kSpeedOfLight;
+  t_tx -= satelliteClockPolynomial(*eph, t_tx);
+  const SatelliteState s = satelliteState(*eph, t_tx);
+  // Sagnac: express the transmit-time position in the ECEF frame of reception.
+  const double tau = range / kSpeedOfLight;
+  const Eigen::Matrix3d R = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau));
+  SatelliteAtReception out;
+  out.p_e = R * s.p_e;
+  out.v_e = R * s.v_e;
+  out.clock = s.clock - groupDelay(*eph, band);
+  out.clock_drift = s.clock_drift;
+  out.variance = s.variance;
+  return out;
+}
+
+}  // namespace giocal

@@ -1,0 +1,47 @@
+// BroadcastOrbits: ephemerides indexed by satellite, selection (nearest toe, healthy, within
+// validity) and the satellite seen by a receiver (transmission-time iteration, Sagnac rotation).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "common/gnss/ephemeris.h"
+#include "common/gnss/rinex_nav.h"
+
+namespace giocal {
+
+/// The satellite as a receiver sees it at reception time: position rotated into the ECEF frame of
+/// reception (Sagnac), clock (with relativity and the group delay of the signal's band) and the
+/// state's velocity and drift for Doppler.
+struct SatelliteAtReception {
+  Eigen::Vector3d p_e = Eigen::Vector3d::Zero(), v_e = Eigen::Vector3d::Zero();
+  double clock = 0.0;        // [s], to add to the geometric range times c
+  double clock_drift = 0.0;  // [s/s]
+  double variance = 0.0;     // ephemeris error variance [m^2]
+};
+
+class BroadcastOrbits {
+ public:
+  explicit BroadcastOrbits(const NavData& nav);
+
+  /// Healthy ephemeris with toe nearest t within the system's validity; nullptr when none.
+  const Ephemeris* select(const SatId& sat, double t) const;
+
+  /// The satellite for a signal received at GPS time t_rx with pseudo-range `range` (used for the
+  /// transmission time) on `band`. Empty when no ephemeris applies.
+  std::optional<SatelliteAtReception> atReception(const SatId& sat, double t_rx, double range,
+                                                  char band) const;
+
+  const NavData& nav() const { return nav_; }
+
+ private:
+  NavData nav_;
+  std::map<SatId, std::vector<const Ephemeris*>> by_sat_;
+};
+
+/// Group delay of the broadcast clock for a single-frequency user of `band` [s] (IS-GPS-200
+/// 20.3.3.3.3.2, Galileo OS SIS ICD 5.1.5, BeiDou ICD 5.2.4.10).
+double groupDelay(const Ephemeris& eph, char band);
+
+}  // namespace giocal

@@ -1,0 +1,48 @@
+// Single point positioning by iterative weighted least squares (one receiver clock per system) and
+// Doppler velocity with a receiver clock drift, both with residual-based outlier rejection.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <vector>
+
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/observation.h"
+#include "common/gnss/weighting.h"
+
+namespace giocal {
+
+struct SppOptions {
+  double elevation_mask_deg = 10.0;
+  double cn0_mask_dbhz = 0.0;    // 0 disables the C/N0 mask
+  ElevationNoise code{0.6};      // broadcast-orbit SPP: code noise plus unmodelled errors
+  ElevationNoise doppler{0.05};  // [m/s]
+  double max_gdop = 30.0;
+  double chi2_probability = 0.999;  // outlier test: reject the worst until the chi2 test passes
+  int max_rejections = 4;
+};
+
+struct SppSolution {
+  bool valid = false;
+  Eigen::Vector3d p_e = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d cov_p = Eigen::Matrix3d::Zero();
+  std::map<GnssSystem, double> clock_m;  // receiver clock per system [m]
+  double gdop = 0.0;
+  std::vector<SatId> used, rejected;
+  bool velocity_valid = false;
+  Eigen::Vector3d v_e = Eigen::Vector3d::Zero();
+  double clock_drift_m_s = 0.0;  // receiver clock drift times c [m/s]
+  std::vector<SatId> doppler_rejected;
+};
+
+/// The primary single-frequency band SPP and Doppler use: L1/E1 for GPS/QZSS/Galileo, B1I for
+/// BeiDou.
+char primaryBand(GnssSystem sys);
+
+SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
+                     const SppOptions& options);
+
+/// chi-square quantile for `dof` degrees of freedom (Wilson-Hilferty approximation).
+double chi2Quantile(double probability, int dof);
+
+}  // namespace giocal

@@ -1,0 +1,105 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs.h"
+#include "common/gnss/spp.h"
+#include "common/math/rotation.h"
+
+namespace giocal {
+namespace {
+
+const std::string kData = std::string(GIOCAL_SOURCE_DIR) + "/data/real/";
+
+struct Stats {
+  int epochs = 0, solved = 0, within5 = 0;
+  Eigen::Vector3d mean_enu = Eigen::Vector3d::Zero();
+  double vel_sq = 0.0;
+  int vel_n = 0;
+};
+
+Stats runSpp(const std::string& obs_path, const std::vector<std::string>& nav_paths,
+             const Geodetic& truth, const std::vector<GnssSystem>& keep) {
+  std::vector<NavData> navs;
+  for (const auto& p : nav_paths) navs.push_back(readRinexNav(p));
+  const BroadcastOrbits orbits(mergeNav(navs));
+  ObsData obs = readRinexObs(obs_path);
+  const LocalFrame frame(ecefFromGeodetic(truth));
+  Stats st;
+  for (ObsEpoch& e : obs.epochs) {
+    std::vector<SatObs> sats;
+    for (const auto& s : e.sats) {
+      if (std::find(keep.begin(), keep.end(), s.sat.sys) != keep.end()) sats.push_back(s);
+    }
+    e.sats = sats;
+    ++st.epochs;
+    const SppSolution sol = solveSpp(e, orbits, SppOptions{});
+    if (!sol.valid) continue;
+    ++st.solved;
+    const Eigen::Vector3d enu = frame.enuFromEcef(sol.p_e);
+    st.mean_enu += enu;
+    st.within5 += enu.head<2>().norm() < 5.0;
+    if (sol.velocity_valid) {
+      st.vel_sq += (frame.R_e_n().transpose() * sol.v_e).squaredNorm();
+      ++st.vel_n;
+    }
+  }
+  if (st.solved) st.mean_enu /= st.solved;
+  return st;
+}
+
+TEST(Spp, MosaicMultiConstellationWithinFiveMetresAndStaticDoppler) {
+  const Geodetic truth{35.13469901 * kDegToRad, 136.97757549 * kDegToRad, 104.8626};
+  const Stats st = runSpp(
+      kData + "mosaic-static-nagoya/rover.obs", {kData + "mosaic-static-nagoya/base.nav"}, truth,
+      {GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou, GnssSystem::kQzss});
+  std::cout << "mosaic SPP: " << st.solved << "/" << st.epochs << " solved, mean ENU error "
+            << st.mean_enu.transpose() << " m, " << st.within5 << " within 5 m horizontal, static "
+            << "velocity RMS " << std::sqrt(st.vel_sq / std::max(st.vel_n, 1)) << " m/s over "
+            << st.vel_n << " epochs\n";
+  EXPECT_EQ(st.solved, st.epochs);
+  EXPECT_LT(st.mean_enu.head<2>().norm(), 5.0);
+  EXPECT_GE(st.within5, st.epochs * 95 / 100);
+  EXPECT_EQ(st.vel_n, st.epochs);
+  EXPECT_LT(std::sqrt(st.vel_sq / st.vel_n), 0.05);
+}
+
+TEST(Spp, MosaicGpsOnly) {
+  const Geodetic truth{35.13469901 * kDegToRad, 136.97757549 * kDegToRad, 104.8626};
+  const Stats st = runSpp(kData + "mosaic-static-nagoya/rover.obs",
+                          {kData + "mosaic-static-nagoya/base.nav"}, truth, {GnssSystem::kGps});
+  std::cout << "mosaic GPS-only SPP: mean ENU error " << st.mean_enu.transpose() << " m\n";
+  EXPECT_EQ(st.solved, st.epochs);
+  EXPECT_LT(st.mean_enu.head<2>().norm(), 5.0);
+}
+
+TEST(Spp, GsiRinex2WithinFiveMetres) {
+  // Reference: mean of RTKLIB's fixed RTK solution (rtklib_reference.pos).
+  const Geodetic truth{35.160865960 * kDegToRad, 139.613843021 * kDegToRad, 68.3822};
+  const std::string dir = kData + "gsi-static-0759-3040/";
+  const Stats st = runSpp(dir + "07590920.05o", {dir + "07590920.05n", dir + "30400920.05n"}, truth,
+                          {GnssSystem::kGps});
+  std::cout << "GSI SPP: " << st.solved << "/" << st.epochs << " solved, mean ENU error "
+            << st.mean_enu.transpose() << " m, " << st.within5 << " within 5 m horizontal\n";
+  EXPECT_GE(st.solved, 110);  // 2005: the last epochs have only ~5 satellites above the mask
+  EXPECT_LT(st.mean_enu.head<2>().norm(), 5.0);
+  EXPECT_GE(st.within5, st.solved * 90 / 100);
+}
+
+TEST(Spp, Chi2Quantile) {
+  // Tabulated 99.9 % and 95 % points: exact for 1 degree of freedom, Wilson-Hilferty (within
+  // 1.5 %, enough for an outlier gate) above.
+  EXPECT_NEAR(chi2Quantile(0.999, 1), 10.828, 0.01);
+  EXPECT_NEAR(chi2Quantile(0.95, 1), 3.841, 0.01);
+  for (const auto& [dof, q999] :
+       std::vector<std::pair<int, double>>{{2, 13.816}, {5, 20.515}, {20, 45.315}}) {
+    EXPECT_NEAR(chi2Quantile(0.999, dof) / q999, 1.0, 0.015) << dof;
+  }
+  EXPECT_NEAR(chi2Quantile(0.95, 10) / 18.307, 1.0, 0.015);
+}
+
+}  // namespace
+}  // namespace giocal
