@@ -48,6 +48,7 @@ double chi2Quantile(double probability, int dof) {
     const double z1 = normalQuantile(0.5 + probability / 2.0);  // chi2(1) is a squared normal
     return z1 * z1;
   }
+  if (dof == 2) return -2.0 * std::log(1.0 - probability);  // chi2(2) is exponential
   const double k = dof;
   const double t = 1.0 - 2.0 / (9.0 * k) + z * std::sqrt(2.0 / (9.0 * k));
   return k * t * t * t;

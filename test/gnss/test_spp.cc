@@ -90,7 +90,7 @@ TEST(Spp, GsiRinex2WithinFiveMetres) {
 }
 
 TEST(Spp, Chi2Quantile) {
-  // Tabulated 99.9 % and 95 % points: exact for 1 degree of freedom, Wilson-Hilferty (within
+  // Tabulated 99.9 % and 95 % points: exact for 1 and 2 degrees of freedom, Wilson-Hilferty (within
   // 1.5 %, enough for an outlier gate) above.
   EXPECT_NEAR(chi2Quantile(0.999, 1), 10.828, 0.01);
   EXPECT_NEAR(chi2Quantile(0.95, 1), 3.841, 0.01);
