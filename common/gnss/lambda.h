@@ -1,0 +1,55 @@
+// LAMBDA integer ambiguity resolution (Teunissen 1995; de Jonge & Tiberius 1996): LtDL
+// factorization, integer Gauss decorrelation (Z-transform), search with a shrinking ellipsoid
+// (depth-first with zig-zag enumeration), the ratio test, partial ambiguity resolution and the
+// bootstrapped success rate.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace giocal {
+
+/// Q = L^T diag(D) L with L unit lower triangular.
+struct LtDL {
+  Eigen::MatrixXd L;
+  Eigen::VectorXd D;
+};
+/// Throws std::invalid_argument when Q is not positive definite.
+LtDL factorLtDL(const Eigen::MatrixXd& Q);
+
+/// The decorrelating transformation: z = Z^T a has covariance Z^T Q Z = L^T diag(D) L.
+struct Decorrelation {
+  Eigen::MatrixXd Z;  // integer, unimodular
+  LtDL ltdl;          // of Z^T Q Z
+};
+Decorrelation decorrelate(const Eigen::MatrixXd& Q);
+
+/// The m integer vectors closest to `a` in the metric of Q (ascending squared norms).
+struct SearchResult {
+  std::vector<Eigen::VectorXd> candidates;
+  std::vector<double> squared_norms;
+};
+SearchResult integerSearch(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, int m = 2);
+
+/// Bootstrapped success rate from the decorrelated conditional variances.
+double bootstrapSuccessRate(const Eigen::VectorXd& D);
+
+struct LambdaOptions {
+  double ratio_threshold = 3.0;  // second best / best squared norm
+  int min_fixed = 4;             // partial AR keeps at least this many
+};
+
+struct AmbiguityFix {
+  bool fixed = false;
+  std::vector<int> indices;  // which of the input ambiguities are fixed
+  Eigen::VectorXd values;    // their integer values, in `indices` order
+  double ratio = 0.0;
+  double success_rate = 0.0;
+};
+
+/// Full resolution, then partial: drops ambiguities in `drop_order` (first = dropped first, for
+/// example the lowest elevation) until the ratio test passes or fewer than min_fixed remain.
+AmbiguityFix resolveAmbiguities(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q,
+                                const std::vector<int>& drop_order, const LambdaOptions& options);
+
+}  // namespace giocal

@@ -1,0 +1,148 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "common/gnss/lambda.h"
+
+namespace giocal {
+namespace {
+
+// A GNSS-like ambiguity covariance: strongly correlated (geometry shared by all) and
+// ill-conditioned.
+Eigen::MatrixXd randomCovariance(std::mt19937& rng, int n) {
+  std::normal_distribution<double> g(0.0, 1.0);
+  Eigen::MatrixXd A(n + 3, n);
+  for (int i = 0; i < A.rows(); ++i)
+    for (int j = 0; j < n; ++j) A(i, j) = g(rng);
+  Eigen::MatrixXd geometry = Eigen::MatrixXd::Ones(n, n) * 4.0;
+  return 0.05 * A.transpose() * A / n + geometry + 0.01 * Eigen::MatrixXd::Identity(n, n);
+}
+
+double qnorm(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, const Eigen::VectorXd& z) {
+  return (a - z).dot(Q.ldlt().solve(a - z));
+}
+
+// Every integer vector within +-r of round(a): the two smallest squared norms.
+std::pair<Eigen::VectorXd, double> bruteForce(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q,
+                                              int r, double& second) {
+  const int n = static_cast<int>(a.size());
+  Eigen::VectorXd base = a.array().round().matrix(), z(n), best(n);
+  double best_norm = 1e300;
+  second = 1e300;
+  std::vector<int> off(static_cast<size_t>(n), -r);
+  while (true) {
+    for (int i = 0; i < n; ++i) z[i] = base[i] + off[static_cast<size_t>(i)];
+    const double d = qnorm(a, Q, z);
+    if (d < best_norm) {
+      second = best_norm;
+      best_norm = d;
+      best = z;
+    } else if (d < second) {
+      second = d;
+    }
+    int i = 0;
+    while (i < n && ++off[static_cast<size_t>(i)] > r) off[static_cast<size_t>(i++)] = -r;
+    if (i == n) break;
+  }
+  return {best, best_norm};
+}
+
+TEST(Lambda, LtDLReconstructsTheCovariance) {
+  std::mt19937 rng(1);
+  for (int n = 1; n <= 8; ++n) {
+    const Eigen::MatrixXd Q = randomCovariance(rng, n);
+    const LtDL f = factorLtDL(Q);
+    EXPECT_LT((f.L.transpose() * f.D.asDiagonal() * f.L - Q).norm(), 1e-10 * Q.norm());
+    for (int i = 0; i < n; ++i) EXPECT_DOUBLE_EQ(f.L(i, i), 1.0);
+    EXPECT_LT(f.L.triangularView<Eigen::StrictlyUpper>().toDenseMatrix().norm(), 1e-15);
+  }
+  EXPECT_THROW(factorLtDL(-Eigen::MatrixXd::Identity(2, 2)), std::invalid_argument);
+}
+
+TEST(Lambda, ZTransformIsUnimodularAndDecorrelates) {
+  std::mt19937 rng(2);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int n = 2 + trial % 9;
+    const Eigen::MatrixXd Q = randomCovariance(rng, n);
+    const Decorrelation d = decorrelate(Q);
+    // Integer entries, determinant +-1.
+    EXPECT_LT((d.Z - d.Z.array().round().matrix()).norm(), 1e-12);
+    EXPECT_NEAR(std::abs(d.Z.determinant()), 1.0, 1e-6);
+    const Eigen::MatrixXd Qz = d.Z.transpose() * Q * d.Z;
+    EXPECT_LT((d.ltdl.L.transpose() * d.ltdl.D.asDiagonal() * d.ltdl.L - Qz).norm(),
+              1e-8 * Qz.norm());
+    // Conditioning improves (the geometry-dominated Q has a condition number in the hundreds).
+    auto cond = [](const Eigen::MatrixXd& M) {
+      const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M).eigenvalues();
+      return ev.maxCoeff() / ev.minCoeff();
+    };
+    EXPECT_LT(cond(Qz), cond(Q)) << "n " << n;
+  }
+}
+
+TEST(Lambda, SearchEqualsBruteForceOnRandomProblems) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-20.0, 20.0);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 2 + trial % 3;  // 2..4: brute force over +-4 stays small
+    const Eigen::MatrixXd Q = 0.05 * randomCovariance(rng, n);
+    Eigen::VectorXd a(n);
+    for (int i = 0; i < n; ++i) a[i] = u(rng);
+    double second = 0.0;
+    const auto [best, best_norm] = bruteForce(a, Q, 4, second);
+    const SearchResult r = integerSearch(a, Q, 2);
+    ASSERT_EQ(r.candidates.size(), 2u);
+    EXPECT_LT((r.candidates[0] - best).norm(), 1e-9) << "trial " << trial;
+    EXPECT_NEAR(r.squared_norms[0], best_norm, 1e-6 * (1 + best_norm));
+    EXPECT_NEAR(r.squared_norms[1], second, 1e-6 * (1 + second));
+    EXPECT_NEAR(qnorm(a, Q, r.candidates[1]), r.squared_norms[1], 1e-6 * (1 + second));
+  }
+}
+
+TEST(Lambda, PublishedThreeDimensionalExample) {
+  // de Jonge & Tiberius (1996), the LAMBDA method's 3-D example: float ambiguities and covariance.
+  Eigen::Matrix3d Q;
+  Q << 6.290, 5.978, 0.544, 5.978, 6.292, 2.340, 0.544, 2.340, 6.288;
+  const Eigen::Vector3d a(5.45, 3.10, 2.97);
+  const SearchResult r = integerSearch(a, Q, 2);
+  EXPECT_EQ(r.candidates[0], Eigen::Vector3d(5, 3, 4));
+  double second = 0.0;
+  const auto [best, best_norm] = bruteForce(a, Q, 6, second);
+  EXPECT_EQ(best, Eigen::Vector3d(5, 3, 4));
+  EXPECT_NEAR(r.squared_norms[0], best_norm, 1e-9);
+  EXPECT_NEAR(r.squared_norms[1], second, 1e-9);
+}
+
+TEST(Lambda, RatioTestAndPartialResolution) {
+  // Six precise ambiguities near integers, the last two noisy: full AR fails the ratio test,
+  // partial AR dropping the noisy ones first fixes the remaining four to the truth.
+  Eigen::VectorXd truth(6);
+  truth << 3, -7, 12, 0, 5, -2;
+  Eigen::VectorXd a = truth;
+  a += (Eigen::VectorXd(6) << 0.02, -0.03, 0.01, 0.02, 0.48, -0.45).finished();
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(6, 6) * 0.003 + Eigen::MatrixXd::Ones(6, 6) * 0.001;
+  Q(4, 4) = Q(5, 5) = 1.0;
+  LambdaOptions opt;
+  const AmbiguityFix full = resolveAmbiguities(a, Q, {}, opt);
+  EXPECT_FALSE(full.fixed);
+  const AmbiguityFix partial = resolveAmbiguities(a, Q, {5, 4, 3, 2}, opt);
+  ASSERT_TRUE(partial.fixed);
+  EXPECT_EQ(partial.indices, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(partial.values, truth.head(4));
+  EXPECT_GE(partial.ratio, 3.0);
+  EXPECT_GT(partial.success_rate, 0.999);
+  // No more than min_fixed are dropped.
+  opt.min_fixed = 5;
+  EXPECT_FALSE(resolveAmbiguities(a, Q, {5, 4, 3, 2}, opt).fixed);
+}
+
+TEST(Lambda, BootstrapSuccessRate) {
+  // One ambiguity with sigma 0.1 cycle: P = 2 Phi(0.5 / 0.1) - 1.
+  EXPECT_NEAR(bootstrapSuccessRate(Eigen::VectorXd::Constant(1, 0.01)),
+              std::erf(5.0 / std::sqrt(2.0)), 1e-12);
+  EXPECT_LT(bootstrapSuccessRate(Eigen::VectorXd::Constant(3, 1.0)), 0.1);
+}
+
+}  // namespace
+}  // namespace giocal
