@@ -6,6 +6,7 @@
 
 #include "apps/check_command.h"
 #include "apps/simulate_command.h"
+#include "common/gnss/rtk_job.h"
 #include "common/io/data_error.h"
 
 namespace po = boost::program_options;
@@ -24,8 +25,7 @@ const char* kUsage =
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";
 
 // Sub-commands of the command-line contract that are not implemented yet, and their issue.
-const std::map<std::string, std::string> kNotYet{{"rtk", "issue 3, the GNSS layer"},
-                                                 {"calibrate", "issues 5 and 6, the estimators"},
+const std::map<std::string, std::string> kNotYet{{"calibrate", "issues 5 and 6, the estimators"},
                                                  {"compare", "issue 6, the factor graph"}};
 
 int runCheckCommand(int argc, char** argv) {
@@ -52,6 +52,35 @@ int runSimulateCommand(int argc, char** argv) {
   return 0;
 }
 
+int runRtkCommand(int argc, char** argv) {
+  po::options_description opts("giocal rtk");
+  opts.add_options()("rover", po::value<std::string>()->required(), "rover RINEX observations")(
+      "base", po::value<std::string>()->required(), "base RINEX observations")(
+      "nav", po::value<std::vector<std::string>>()->required(), "RINEX navigation file(s)")(
+      "base-pos", po::value<std::string>(), "base ECEF x,y,z [m]")(
+      "config", po::value<std::string>(), "YAML configuration")(
+      "out", po::value<std::string>()->required(), "solution file (.pos)");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, opts), vm);
+  po::notify(vm);
+  giocal::RtkJob job;
+  job.rover = vm["rover"].as<std::string>();
+  job.base = vm["base"].as<std::string>();
+  job.nav = vm["nav"].as<std::vector<std::string>>();
+  job.out = vm["out"].as<std::string>();
+  if (vm.count("base-pos"))
+    job.base_pos = giocal::parseBasePosition(vm["base-pos"].as<std::string>());
+  if (vm.count("config")) {
+    std::cerr << "giocal rtk: note: RTK options are not read from --config yet; defaults used\n";
+  }
+  const giocal::RtkSummary s = giocal::runRtk(job);
+  std::cout << "giocal rtk: " << s.epochs << " epochs, " << s.fixed << " fixed ("
+            << (s.epochs ? 100.0 * s.fixed / s.epochs : 0.0) << " %), " << s.floats << " float, "
+            << s.single << " single; " << s.wall_s << " s for " << s.data_s << " s of data -> "
+            << job.out << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,6 +92,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "check") return runCheckCommand(argc - 1, argv + 1);
     if (command == "simulate") return runSimulateCommand(argc - 1, argv + 1);
+    if (command == "rtk") return runRtkCommand(argc - 1, argv + 1);
     if (kNotYet.count(command)) {
       std::cerr << "giocal " << command << ": not implemented yet (" << kNotYet.at(command)
                 << ")\n";

@@ -73,19 +73,23 @@ const Ephemeris* BroadcastOrbits::select(const SatId& sat, double t) const {
   return best;
 }
 
-std::optional<SatelliteAtReception> BroadcastOrbits::atReception(const SatId& sat, double t_rx,
-                                                                 double range, char band) const {
+std::optional<SatelliteAtReception> BroadcastOrbits::atReception(
+    const SatId& sat, double t_rx, double range, char band, const Eigen::Vector3d& rx_e) const {
   const Ephemeris* eph = select(sat, t_rx);
   if (!eph) return std::nullopt;
-  // Transmission time: the pseudo-range gives the travel time including both clocks; the
-  // satellite clock is then removed (the receiver clock error is common to all and small
-  // enough for the orbit: 1 ms of receiver clock moves a satellite by 4 m, handled by the
-  // caller's iteration on the clock).
+  // Transmission time in GPS time: the tag minus the pseudo-range is the satellite clock's
+  // transmission time (both carry the receiver clock error), corrected by the satellite clock.
   double t_tx = t_rx - range / kSpeedOfLight;
   t_tx -= satelliteClockPolynomial(*eph, t_tx);
   const SatelliteState s = satelliteState(*eph, t_tx);
-  // Sagnac: express the transmit-time position in the ECEF frame of reception.
-  const double tau = range / kSpeedOfLight;
+  // Sagnac: express the transmit-time position in the ECEF frame of reception, rotating by the
+  // geometric flight time (iterated once: the rotation changes the range by metres only).
+  double tau = range / kSpeedOfLight;
+  if (rx_e.norm() > 1e6) {
+    tau = (s.p_e - rx_e).norm() / kSpeedOfLight;
+    const Eigen::Vector3d p1 = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau)) * s.p_e;
+    tau = (p1 - rx_e).norm() / kSpeedOfLight;
+  }
   const Eigen::Matrix3d R = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau));
   SatelliteAtReception out;
   out.p_e = R * s.p_e;

@@ -28,10 +28,13 @@ class BroadcastOrbits {
   /// Healthy ephemeris with toe nearest t within the system's validity; nullptr when none.
   const Ephemeris* select(const SatId& sat, double t) const;
 
-  /// The satellite for a signal received at GPS time t_rx with pseudo-range `range` (used for the
-  /// transmission time) on `band`. Empty when no ephemeris applies.
+  /// The satellite for a signal tagged t_rx by the receiver clock with pseudo-range `range` on
+  /// `band`. t_rx - range / c is the transmission time whatever the receiver clock error (the
+  /// pseudo-range carries the same error). The Earth rotation during the flight uses the geometric
+  /// travel time from `rx_e` (the receiver's approximate ECEF position; zero: use range / c, which
+  /// is wrong by the receiver clock error). Empty when no ephemeris applies.
   std::optional<SatelliteAtReception> atReception(const SatId& sat, double t_rx, double range,
-                                                  char band) const;
+                                                  char band, const Eigen::Vector3d& rx_e) const;
 
   const NavData& nav() const { return nav_; }
 

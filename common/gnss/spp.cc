@@ -85,8 +85,7 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
       for (size_t k = 0; k < cands.size(); ++k) {
         if (excluded[k]) continue;
         Candidate& c = cands[k];
-        const double dtr = clk.count(c.sat.sys) ? clk[c.sat.sys] / kSpeedOfLight : 0.0;
-        const auto s = orbits.atReception(c.sat, epoch.t - dtr, c.sig->P, c.sig->band);
+        const auto s = orbits.atReception(c.sat, epoch.t, c.sig->P, c.sig->band, x);
         if (!s) continue;
         c.s = *s;
         const Eigen::Vector3d d = c.s.p_e - x;

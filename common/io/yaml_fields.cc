@@ -115,7 +115,8 @@ std::vector<std::string> YamlFields::textList(const std::string& key) const {
 
 Eigen::VectorXd YamlFields::numberList(const std::string& key, int n) const {
   const YAML::Node node = find(key);
-  const std::string what = "'" + key + "' must be a list of " + std::to_string(n) + " finite numbers";
+  const std::string what =
+      "'" + key + "' must be a list of " + std::to_string(n) + " finite numbers";
   if (!node.IsSequence() || static_cast<int>(node.size()) != n) {
     throw DataError(path_, lineOf(node), what);
   }

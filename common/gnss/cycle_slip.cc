@@ -1,0 +1,100 @@
+#include "common/gnss/cycle_slip.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace giocal {
+
+namespace {
+
+// Geometry-free [m] and Melbourne-Wuebbena [wide-lane cycles] combinations of two signals.
+bool combinations(GnssSystem sys, const SignalObs* a, const SignalObs* b, double& gf, double& mw) {
+  if (!a || !b || std::isnan(a->L) || std::isnan(b->L)) return false;
+  const double fa = carrierFrequency(sys, a->band), fb = carrierFrequency(sys, b->band);
+  if (fa <= 0.0 || fb <= 0.0 || fa == fb) return false;
+  gf = kSpeedOfLight / fa * a->L - kSpeedOfLight / fb * b->L;
+  const double lw = kSpeedOfLight / (fa - fb);
+  mw = (a->L - b->L) - (fa * a->P + fb * b->P) / (fa + fb) / lw;
+  return true;
+}
+
+char primaryBandOf(GnssSystem sys) { return sys == GnssSystem::kBeidou ? '2' : '1'; }
+
+}  // namespace
+
+void CycleSlipDetector::update(const ObsEpoch& epoch) {
+  slip_.clear();
+  // Doppler check: the phase change against the Doppler prediction, with the part common to all
+  // satellites (receiver clock jumps) removed by the median.
+  std::vector<std::pair<std::pair<SatId, char>, double>> doppler_misfit;
+  std::map<std::pair<SatId, char>, Track> next;
+  for (const SatObs& so : epoch.sats) {
+    const SignalObs* prim = so.bestOnBand(primaryBandOf(so.sat.sys));
+    std::vector<char> bands;
+    for (const SignalObs& s : so.signals) {
+      if (!std::isnan(s.L) && std::find(bands.begin(), bands.end(), s.band) == bands.end()) {
+        bands.push_back(s.band);
+      }
+    }
+    for (char band : bands) {
+      const SignalObs* s = so.bestOnBand(band);
+      if (!s || std::isnan(s->L)) continue;
+      // Pair with the primary band, or (for the primary band) with the first other band.
+      const SignalObs* other = nullptr;
+      if (s != prim) {
+        other = prim;
+      } else {
+        for (char b2 : bands) {
+          if (b2 != band && !other) other = so.bestOnBand(b2);
+        }
+      }
+      double gf = 0.0, mw = 0.0;
+      const bool dual = combinations(so.sat.sys, s, other, gf, mw);
+      const auto key = std::make_pair(so.sat, band);
+      Track tr;
+      tr.t = epoch.t;
+      tr.L = s->L;
+      tr.D = s->D;
+      tr.gf = gf;
+      tr.mw = mw;
+      tr.has_gf = dual;
+      tr.has_mw = dual && !std::isnan(mw);
+      bool slip = (s->lli & 1) != 0 || epoch.flag == 1;
+      const auto it = tracks_.find(key);
+      if (it == tracks_.end() || epoch.t - it->second.t > options_.max_gap) {
+        slip = true;
+      } else {
+        const Track& p = it->second;
+        const double dt = epoch.t - p.t;
+        if (dual && p.has_gf &&
+            std::abs(gf - p.gf) > options_.gf_threshold + options_.gf_rate * dt) {
+          slip = true;
+        }
+        if (tr.has_mw && p.has_mw && std::abs(mw - p.mw) > options_.mw_threshold) slip = true;
+        if (!std::isnan(s->D) && !std::isnan(p.D)) {
+          doppler_misfit.push_back({key, (s->L - p.L) + 0.5 * (s->D + p.D) * dt});
+        }
+      }
+      slip_[key] = slip;
+      next[key] = tr;
+    }
+  }
+  if (doppler_misfit.size() >= 3) {
+    std::vector<double> v;
+    for (const auto& m : doppler_misfit) v.push_back(m.second);
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    const double median = v[v.size() / 2];
+    for (const auto& m : doppler_misfit) {
+      if (std::abs(m.second - median) > options_.doppler_threshold) slip_[m.first] = true;
+    }
+  }
+  tracks_ = std::move(next);
+}
+
+bool CycleSlipDetector::slipped(const SatId& sat, char band) const {
+  const auto it = slip_.find({sat, band});
+  return it == slip_.end() || it->second;
+}
+
+}  // namespace giocal

@@ -1,0 +1,76 @@
+// RtkFilter: kinematic RTK between a rover and a base at a known position: an extended Kalman
+// filter over rover position, velocity and single-differenced ambiguities fed with DD code and
+// phase, LAMBDA fixing with the ratio test and partial AR, optional fix-and-hold.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/cycle_slip.h"
+#include "common/gnss/lambda.h"
+#include "common/gnss/observation.h"
+#include "common/gnss/spp.h"
+#include "common/gnss/weighting.h"
+
+namespace giocal {
+
+struct RtkOptions {
+  double elevation_mask_deg = 15.0;
+  int frequencies = 2;  // 1: L1/E1/B1I only; 2: plus L2/E5b/B2I
+  std::vector<GnssSystem> systems{GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou,
+                                  GnssSystem::kQzss};
+  ElevationNoise code{0.3};       // undifferenced code noise at zenith [m]
+  ElevationNoise phase{0.003};    // undifferenced phase noise at zenith [m]
+  double accel_noise = 1.0;       // rover acceleration density [m/s^2/sqrt(Hz)]
+  double ambiguity_noise = 1e-4;  // SD ambiguity random walk [cycles/sqrt(s)]
+  double innovation_gate = 5.0;   // reject DD rows whose innovation exceeds this many sigma
+  LambdaOptions lambda;
+  bool fix_and_hold = false;
+  double hold_sigma_cycles = 1e-3;
+  double max_base_offset = 0.5;  // largest rover-base time-tag difference [s]
+  CycleSlipOptions slips;
+};
+
+struct RtkSolution {
+  double t = 0.0;
+  int quality = 0;  // 1 fixed, 2 float, 5 single, 0 none (RTKLIB's Q)
+  Eigen::Vector3d p_e = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d cov_e = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d v_e = Eigen::Vector3d::Zero();
+  int satellites = 0;
+  double ratio = 0.0;
+  double age = 0.0;  // rover minus base time tag [s]
+};
+
+class RtkFilter {
+ public:
+  RtkFilter(const BroadcastOrbits& orbits, const Eigen::Vector3d& base_e,
+            const RtkOptions& options);
+  /// One rover epoch with the base epoch nearest in time (nullptr when none: SPP only).
+  RtkSolution process(const ObsEpoch& rover, const ObsEpoch* base);
+
+ private:
+  using AmbKey = std::pair<SatId, char>;
+  int ambiguityIndex(const AmbKey& key) const;
+  void addAmbiguity(const AmbKey& key, double value, double variance);
+  void removeAmbiguity(const AmbKey& key);
+
+  const BroadcastOrbits& orbits_;
+  Eigen::Vector3d base_e_;
+  RtkOptions options_;
+  CycleSlipDetector rover_slips_, base_slips_;
+  bool initialized_ = false;
+  double t_last_ = 0.0;
+  Eigen::VectorXd x_;  // [p (3), v (3), N...]
+  Eigen::MatrixXd P_;
+  std::vector<AmbKey> amb_keys_;  // state order of the ambiguities
+  std::map<std::pair<GnssSystem, char>, SatId> refs_;
+};
+
+/// Bands used per system: primary and, with two frequencies, the second.
+std::vector<char> rtkBands(GnssSystem sys, int frequencies);
+
+}  // namespace giocal

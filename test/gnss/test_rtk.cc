@@ -1,0 +1,102 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/rtk_job.h"
+#include "common/math/rotation.h"
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+const std::string kData = std::string(GIOCAL_SOURCE_DIR) + "/data/real/";
+
+struct Result {
+  RtkSummary summary;
+  Eigen::Vector3d mean_enu = Eigen::Vector3d::Zero();  // of the fixed solutions
+  int pos_rows = 0;
+};
+
+Result run(RtkJob job, const Geodetic& truth) {
+  test::TempDir dir;
+  job.out = dir.file("out.pos");
+  std::vector<RtkSolution> sols;
+  Result r;
+  r.summary = runRtk(job, &sols);
+  const LocalFrame frame(ecefFromGeodetic(truth));
+  int n = 0;
+  for (const auto& s : sols) {
+    if (s.quality != 1) continue;
+    r.mean_enu += frame.enuFromEcef(s.p_e);
+    ++n;
+  }
+  if (n) r.mean_enu /= n;
+  std::ifstream in(job.out);
+  std::string line;
+  while (std::getline(in, line)) r.pos_rows += !line.empty() && line[0] != '%';
+  return r;
+}
+
+RtkJob mosaicJob() {
+  RtkJob job;
+  const std::string d = kData + "mosaic-static-nagoya/";
+  job.rover = d + "rover.obs";
+  job.base = d + "base.obs";
+  job.nav = {d + "base.nav"};
+  // base_position.txt (the base header's APPROX POSITION is metres off).
+  job.base_pos = ecefFromGeodetic({35.134707705 * kDegToRad, 136.977577939 * kDegToRad, 104.853});
+  return job;
+}
+const Geodetic kMosaicRover{35.13469901 * kDegToRad, 136.97757549 * kDegToRad, 104.8626};
+
+TEST(Rtk, MosaicMultiGnssFixesAndHitsTheKnownPosition) {
+  const Result r = run(mosaicJob(), kMosaicRover);
+  std::cout << "mosaic RTK: " << r.summary.fixed << "/" << r.summary.epochs
+            << " fixed, mean fixed ENU error " << r.mean_enu.transpose() * 1000 << " mm\n";
+  EXPECT_EQ(r.summary.epochs, 301);
+  EXPECT_GE(r.summary.fixed, 298);  // >= 99 %
+  EXPECT_LT(r.mean_enu.head<2>().norm(), 0.01);
+  EXPECT_LT(std::abs(r.mean_enu.z()), 0.02);
+  EXPECT_EQ(r.pos_rows, 301);
+}
+
+TEST(Rtk, MosaicGpsOnly) {
+  RtkJob job = mosaicJob();
+  job.options.systems = {GnssSystem::kGps};
+  const Result r = run(job, kMosaicRover);
+  std::cout << "mosaic GPS-only RTK: " << r.summary.fixed << "/" << r.summary.epochs
+            << " fixed, mean fixed ENU error " << r.mean_enu.transpose() * 1000 << " mm\n";
+  EXPECT_GE(r.summary.fixed, 298);
+  EXPECT_LT(r.mean_enu.head<2>().norm(), 0.01);
+  EXPECT_LT(std::abs(r.mean_enu.z()), 0.02);
+}
+
+TEST(Rtk, GsiRinex2MatchesRtklib) {
+  RtkJob job;
+  const std::string d = kData + "gsi-static-0759-3040/";
+  job.rover = d + "07590920.05o";
+  job.base = d + "30400920.05o";
+  job.nav = {d + "30400920.05n", d + "07590920.05n"};
+  job.base_pos = Eigen::Vector3d(-3978241.958, 3382840.234, 3649900.853);
+  // Mean of RTKLIB's fixed solution (rtklib_reference.pos, 115 epochs).
+  const Geodetic rtklib{35.160865960 * kDegToRad, 139.613843021 * kDegToRad, 68.3822};
+  const Result r = run(job, rtklib);
+  std::cout << "GSI RTK: " << r.summary.fixed << "/" << r.summary.epochs
+            << " fixed, mean fixed ENU minus RTKLIB " << r.mean_enu.transpose() * 1000 << " mm\n";
+  EXPECT_EQ(r.summary.epochs, 120);
+  EXPECT_GE(r.summary.fixed, 114);  // >= 95 % of 120
+  EXPECT_LT(r.mean_enu.head<2>().norm(), 0.02);
+}
+
+TEST(Rtk, BadInputIsReported) {
+  RtkJob job = mosaicJob();
+  job.out = "/nonexistent-dir/out.pos";  // unwritable output
+  EXPECT_THROW(runRtk(job), std::runtime_error);
+  EXPECT_THROW(parseBasePosition("1,2"), std::invalid_argument);
+  EXPECT_THROW(parseBasePosition("1,2,3"), std::invalid_argument);
+  EXPECT_NO_THROW(parseBasePosition("-3978241.958,3382840.234,3649900.853"));
+}
+
+}  // namespace
+}  // namespace giocal
