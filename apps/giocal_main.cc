@@ -1,11 +1,13 @@
 // The giocal command: parses the sub-command and its options and calls the libraries.
 #include <boost/program_options.hpp>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <string>
 
 #include "apps/check_command.h"
 #include "apps/simulate_command.h"
+#include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
 #include "common/io/data_error.h"
 
@@ -20,7 +22,7 @@ const char* kUsage =
     "  giocal simulate  --config <yaml> --out <dir> [--seed <n>]\n"
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
-    "                   [--config <yaml>] --out <file.pos>\n"
+    "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir>\n"
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";
 
@@ -59,7 +61,8 @@ int runRtkCommand(int argc, char** argv) {
       "nav", po::value<std::vector<std::string>>()->required(), "RINEX navigation file(s)")(
       "base-pos", po::value<std::string>(), "base ECEF x,y,z [m]")(
       "config", po::value<std::string>(), "YAML configuration")(
-      "out", po::value<std::string>()->required(), "solution file (.pos)");
+      "out", po::value<std::string>()->required(), "solution file (.pos)")(
+      "overwrite", "replace --out if it exists");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, opts), vm);
   po::notify(vm);
@@ -68,11 +71,12 @@ int runRtkCommand(int argc, char** argv) {
   job.base = vm["base"].as<std::string>();
   job.nav = vm["nav"].as<std::vector<std::string>>();
   job.out = vm["out"].as<std::string>();
+  if (std::filesystem::exists(job.out) && !vm.count("overwrite")) {
+    throw std::runtime_error(job.out + " exists; give --overwrite to replace it");
+  }
   if (vm.count("base-pos"))
     job.base_pos = giocal::parseBasePosition(vm["base-pos"].as<std::string>());
-  if (vm.count("config")) {
-    std::cerr << "giocal rtk: note: RTK options are not read from --config yet; defaults used\n";
-  }
+  if (vm.count("config")) job.options = giocal::readRtkOptions(vm["config"].as<std::string>());
   const giocal::RtkSummary s = giocal::runRtk(job);
   std::cout << "giocal rtk: " << s.epochs << " epochs, " << s.fixed << " fixed ("
             << (s.epochs ? 100.0 * s.fixed / s.epochs : 0.0) << " %), " << s.floats << " float, "

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "common/gnss/rtk_config.h"
 #include "common/io/data_error.h"
 #include "common/io/model_options.h"
 #include "temp_dir.h"
@@ -19,6 +20,28 @@ TEST(ModelOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_DOUBLE_EQ(shipped.nhc_sigma, defaults.nhc_sigma);
   EXPECT_DOUBLE_EQ(shipped.lateral_speed_density, defaults.lateral_speed_density);
   EXPECT_DOUBLE_EQ(shipped.tilt_rate_density, defaults.tilt_rate_density);
+}
+
+TEST(RtkOptions, ShippedConfigEqualsTheDefaults) {
+  const RtkOptions shipped = readRtkOptions(std::string(GIOCAL_SOURCE_DIR) + "/config/giocal.yaml");
+  const RtkOptions d;
+  EXPECT_DOUBLE_EQ(shipped.elevation_mask_deg, d.elevation_mask_deg);
+  EXPECT_EQ(shipped.frequencies, d.frequencies);
+  EXPECT_EQ(shipped.systems, d.systems);
+  EXPECT_DOUBLE_EQ(shipped.code.sigma_zenith, d.code.sigma_zenith);
+  EXPECT_DOUBLE_EQ(shipped.phase.sigma_zenith, d.phase.sigma_zenith);
+  EXPECT_DOUBLE_EQ(shipped.accel_noise, d.accel_noise);
+  EXPECT_DOUBLE_EQ(shipped.ambiguity_noise, d.ambiguity_noise);
+  EXPECT_DOUBLE_EQ(shipped.innovation_gate, d.innovation_gate);
+  EXPECT_DOUBLE_EQ(shipped.lambda.ratio_threshold, d.lambda.ratio_threshold);
+  EXPECT_EQ(shipped.lambda.min_fixed, d.lambda.min_fixed);
+  EXPECT_EQ(shipped.fix_and_hold, d.fix_and_hold);
+  EXPECT_DOUBLE_EQ(shipped.hold_sigma_cycles, d.hold_sigma_cycles);
+  EXPECT_DOUBLE_EQ(shipped.max_base_offset, d.max_base_offset);
+  test::TempDir dir;
+  EXPECT_EQ(readRtkOptions(dir.write("g.yaml", "rtk:\n  systems: G\n")).systems,
+            std::vector<GnssSystem>{GnssSystem::kGps});
+  EXPECT_THROW(readRtkOptions(dir.write("r.yaml", "rtk:\n  systems: GR\n")), DataError);
 }
 
 TEST(ModelOptions, OverridesAndBadValues) {
