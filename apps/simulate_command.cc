@@ -25,9 +25,9 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   log << "simulated '" << cfg.name << "' (seed " << seed
       << "): " << logs.truth.back().t - logs.truth.front().t << " s, " << logs.imu.size()
-      << " IMU and " << logs.odom.size() << " odometer samples in " << wall << " s -> " << out
-      << "\n"
-      << "note: GNSS observations (rover.obs, base.obs, nav.rnx) are not simulated yet (issue 4)\n";
+      << " IMU and " << logs.odom.size() << " odometer samples, " << logs.gnss.rover.size()
+      << " GNSS epochs in " << wall << " s -> " << out << "\n";
+  if (logs.gnss.rover.empty()) log << "note: the config has no gnss section; no RINEX written\n";
 }
 
 }  // namespace giocal

@@ -1,5 +1,7 @@
 #include "sim/sim_config.h"
 
+#include <filesystem>
+
 #include "common/io/data_error.h"
 #include "common/io/yaml_fields.h"
 #include "common/math/rotation.h"
@@ -85,6 +87,36 @@ SimConfig readSimConfig(const std::string& path) {
   c.truth.q_b_m = Eigen::Quaterniond(
       rotationFromRpy(y.vector3("calibration.rpy_b_m_deg", -180.0, 180.0) * kDegToRad));
   c.p_b_g = y.vector3("calibration.p_b_g", -10.0, 10.0);
+
+  GnssSimSpec& g = c.gnss;
+  g.enabled = y.has("gnss");
+  if (g.enabled) {
+    // The nav file is relative to the config file's folder.
+    const std::filesystem::path nav = y.text("gnss.nav_file");
+    g.nav_file =
+        nav.is_absolute()
+            ? nav.string()
+            : (std::filesystem::path(path).parent_path() / nav).lexically_normal().string();
+    if (!std::filesystem::exists(g.nav_file)) y.fail("gnss.nav_file", "no file " + g.nav_file);
+    g.systems = y.textOr("gnss.systems", g.systems);
+    for (char sys : g.systems) {
+      if (sys != 'G' && sys != 'E' && sys != 'C')
+        y.fail("gnss.systems", "letters must be among G, E, C");
+    }
+    g.beidou_meo_only = y.numberOr("gnss.beidou_meo_only", g.beidou_meo_only ? 1 : 0, 0, 1) != 0.0;
+    g.rate_hz = y.numberOr("gnss.rate_hz", g.rate_hz, 0.01, 100.0);
+    g.elevation_mask_deg = y.numberOr("gnss.elevation_mask_deg", g.elevation_mask_deg, 0.0, 60.0);
+    g.code_sigma = y.numberOr("gnss.code_sigma", g.code_sigma, 0.0, 100.0);
+    g.phase_sigma = y.numberOr("gnss.phase_sigma", g.phase_sigma, 0.0, 1.0);
+    g.doppler_sigma = y.numberOr("gnss.doppler_sigma", g.doppler_sigma, 0.0, 10.0);
+    if (y.has("gnss.base_offset_enu"))
+      g.base_offset_enu = y.vector3("gnss.base_offset_enu", -1e5, 1e5);
+    g.clock_offset_sd = y.numberOr("gnss.clock_offset_sd", g.clock_offset_sd, 0.0, 1e-3);
+    g.clock_drift_sd = y.numberOr("gnss.clock_drift_sd", g.clock_drift_sd, 0.0, 1e-5);
+    g.zenith_wet_sd = y.numberOr("gnss.zenith_wet_sd", g.zenith_wet_sd, 0.0, 1.0);
+    g.vtec_tecu = y.numberOr("gnss.vtec_tecu", g.vtec_tecu, 0.0, 300.0);
+    g.vtec_gradient = y.numberOr("gnss.vtec_gradient", g.vtec_gradient, 0.0, 1e-4);
+  }
 
   c.guess_sd_s_v = y.numberOr("initial_guess_sigma.s_v", c.guess_sd_s_v, 1e-9, 0.5);
   c.guess_sd_s_w = y.numberOr("initial_guess_sigma.s_w", c.guess_sd_s_w, 1e-9, 0.5);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/odometer/odometer_calibration.h"
+#include "sim/gnss_simulator.h"
 #include "sim/motion_profile.h"
 #include "sim/trajectory.h"
 
@@ -46,6 +47,7 @@ struct SimConfig {
   OdometerErrorSpec odometer;
   OdometerCalibration truth;  // true s_v, s_w, p_b_m, q_b_m
   Eigen::Vector3d p_b_g{0.0, 0.0, 0.5};
+  GnssSimSpec gnss;  // gnss.enabled = false when the config has no gnss section
   // 1-sigma of the initial calibration guess drawn around the truth (written to dataset.yaml).
   double guess_sd_s_v = 0.02, guess_sd_s_w = 0.02;
   double guess_sd_p_b_m = 0.5;    // [m]

@@ -5,8 +5,10 @@
 #include <random>
 #include <stdexcept>
 
+#include "common/gnss/rinex_nav.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
+#include "sim/rinex_writer.h"
 #include "sim/sensor_errors.h"
 #include "sim/trajectory.h"
 
@@ -42,13 +44,25 @@ TruthSample truthRow(const LocalFrame& frame, const NavState& s) {
   return row;
 }
 
+// The IMU state of a rigidly mounted IMU (T_n_b = T_n_m T_m_b) and its acceleration in n.
+NavState imuState(const VehicleKinematics& m, const Eigen::Matrix3d& R_m_b,
+                  const Eigen::Vector3d& p_m_b, Eigen::Vector3d* a_n_b) {
+  const Eigen::Vector3d w_x_p = m.w_m.cross(p_m_b);
+  NavState s;
+  s.p_n_b = m.p_n_m + m.R_n_m * p_m_b;
+  s.v_n_b = m.v_n_m + m.R_n_m * w_x_p;
+  s.q_n_b = Eigen::Quaterniond(m.R_n_m * R_m_b).normalized();
+  if (a_n_b) *a_n_b = m.a_n_m + m.R_n_m * (m.alpha_m.cross(p_m_b) + m.w_m.cross(w_x_p));
+  return s;
+}
+
 }  // namespace
 
 SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   const double t0 = parseGpsTime(config.start_time);
   const Eigen::Vector3d origin_e = ecefFromGeodetic(
       {config.origin_lat_deg * kDegToRad, config.origin_lon_deg * kDegToRad, config.origin_h});
-  SimulatedLogs out{LocalFrame(origin_e), {}, {}, {}, {}, {}, {}, {}, {}};
+  SimulatedLogs out{LocalFrame(origin_e), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   const LocalFrame& frame = out.frame;
   const Trajectory traj(MotionProfile(config.segments), config.terrain, Eigen::Vector3d::Zero(),
                         config.initial_heading_deg * kDegToRad);
@@ -68,15 +82,10 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   for (long k = 0; k <= n_imu; ++k) {
     const double tau = static_cast<double>(k) * dt_imu;
     const VehicleKinematics m = traj.at(tau);
-    // Rigid mounting: T_n_b = T_n_m T_m_b.
-    const Eigen::Matrix3d R_n_b = m.R_n_m * R_m_b;
-    const Eigen::Vector3d w_x_p = m.w_m.cross(p_m_b);
-    NavState s;
+    Eigen::Vector3d a_n_b;
+    NavState s = imuState(m, R_m_b, p_m_b, &a_n_b);
     s.t = t0 + tau;
-    s.p_n_b = m.p_n_m + m.R_n_m * p_m_b;
-    s.v_n_b = m.v_n_m + m.R_n_m * w_x_p;
-    s.q_n_b = Eigen::Quaterniond(R_n_b).normalized();
-    const Eigen::Vector3d a_n_b = m.a_n_m + m.R_n_m * (m.alpha_m.cross(p_m_b) + m.w_m.cross(w_x_p));
+    const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
     // Earth-fixed n: a = R f + g - 2 w_ie x v, with g the normal gravity at the position.
     const Eigen::Vector3d f_b =
         R_n_b.transpose() * (a_n_b - frame.gravity_n(s.p_n_b) + 2.0 * w_ie_n.cross(s.v_n_b));
@@ -97,6 +106,30 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
     out.true_speed.push_back(m.speed);
     out.true_yaw_rate.push_back(m.w_m.z());
     out.odom.push_back(odo_errors.measure(t0 + tau, m.speed, m.w_m.z(), dt_odo, rng_odo));
+  }
+
+  if (config.gnss.enabled) {
+    // Antenna at the lever arm p_b_g: p_g = p_b + R_n_b p_b_g, v_g = v_b + R_n_b (w_b x p_b_g).
+    const auto antenna = [&](double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e) {
+      const VehicleKinematics m = traj.at(t - t0);
+      const NavState s = imuState(m, R_m_b, p_m_b, nullptr);
+      const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
+      const Eigen::Vector3d w_b = R_b_m * m.w_m;
+      p_e = frame.ecefFromEnu(s.p_n_b + R_n_b * config.p_b_g);
+      v_e = frame.R_e_n() * (s.v_n_b + R_n_b * w_b.cross(config.p_b_g));
+    };
+    const BroadcastOrbits orbits(readRinexNav(config.gnss.nav_file));
+    const Eigen::Vector3d base_e = frame.ecefFromEnu(config.gnss.base_offset_enu);
+    std::mt19937_64 rng_gnss(seed * 4 + 4);
+    out.gnss =
+        simulateGnss(config.gnss, orbits, antenna, base_e, t0, t0 + traj.duration(), rng_gnss);
+    out.nav_file = config.gnss.nav_file;
+    for (const ObsEpoch& e : out.gnss.rover) {
+      Eigen::Vector3d p, v;
+      antenna(e.t, p, v);
+      out.antenna_e.push_back(p);
+    }
+    out.description.base_position_ecef = base_e;
   }
 
   out.truth_calib.calib = truth;
@@ -142,6 +175,26 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
   writeOdomCsv(d.pathOf(d.odom), logs.odom);
   writeTruthCsv(d.pathOf(d.truth), logs.truth);
   writeTruthCalibration(folder + "/truth_calib.yaml", logs.truth_calib);
+  if (!logs.gnss.rover.empty()) {
+    RinexObsHeader h;
+    for (const auto& [sat_sys, letter] : {std::pair<GnssSystem, char>{GnssSystem::kGps, 'G'},
+                                          {GnssSystem::kGalileo, 'E'},
+                                          {GnssSystem::kBeidou, 'C'}}) {
+      for (const auto& [band, attr] : simulatedSignals(sat_sys)) {
+        for (char type : {'C', 'L', 'D', 'S'}) h.obs_types[letter].push_back({type, band, attr});
+      }
+    }
+    h.interval = logs.gnss.rover.size() > 1 ? logs.gnss.rover[1].t - logs.gnss.rover[0].t : 1.0;
+    h.marker = "ROVER";
+    // A receiver's own approximate position: the first antenna position, metres off.
+    h.approx_position = logs.antenna_e.front() + Eigen::Vector3d(2.0, -3.0, 1.5);
+    writeRinexObs(d.pathOf(d.rover_obs), h, logs.gnss.rover);
+    h.marker = "BASE";
+    h.approx_position = logs.gnss.base_e;
+    writeRinexObs(d.pathOf(d.base_obs), h, logs.gnss.base);
+    std::filesystem::copy_file(logs.nav_file, d.pathOf(d.nav.front()),
+                               std::filesystem::copy_options::overwrite_existing);
+  }
   writeDatasetDescription(d);
 }
 

@@ -1,5 +1,5 @@
-// simulate(): the sensor logs of one dataset (IMU, odometer, truth) from a SimConfig and a seed,
-// and writeDataset() to put them in a dataset folder. GNSS observations are issue 4's next step.
+// simulate(): the logs of one dataset (IMU, odometer, rover and base GNSS, truth) from a SimConfig
+// and a seed, and writeDataset() to put them in a dataset folder.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +12,7 @@
 #include "common/io/dataset_description.h"
 #include "common/io/sensor_logs.h"
 #include "common/odometer/odom_sample.h"
+#include "sim/gnss_simulator.h"
 #include "sim/sim_config.h"
 
 namespace giocal::sim {
@@ -23,6 +24,9 @@ struct SimulatedLogs {
   std::vector<TruthSample> truth;                 // truth.csv rows, at the IMU times
   std::vector<NavState> truth_n;                  // the same in n, with the true biases, for tests
   std::vector<double> true_speed, true_yaw_rate;  // of m at the odometer times
+  SimulatedGnss gnss;                             // empty when the config has no gnss section
+  std::string nav_file;                           // copied into the dataset as nav.rnx
+  std::vector<Eigen::Vector3d> antenna_e;         // true antenna ECEF at the rover epochs
   DatasetDescription description;                 // dataset.yaml content (folder left empty)
   TruthCalibration truth_calib;
 };

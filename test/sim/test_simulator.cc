@@ -135,12 +135,14 @@ TEST(Simulator, SameSeedGivesIdenticalFilesAndTheReadersAcceptThem) {
   sim::writeDataset(sim::simulate(cfg, 7), dir.file("a"));
   sim::writeDataset(sim::simulate(cfg, 7), dir.file("b"));
   sim::writeDataset(sim::simulate(cfg, 8), dir.file("c"));
-  for (const char* f : {"imu.csv", "odom.csv", "truth.csv", "dataset.yaml", "truth_calib.yaml"}) {
+  for (const char* f : {"imu.csv", "odom.csv", "truth.csv", "dataset.yaml", "truth_calib.yaml",
+                        "rover.obs", "base.obs", "nav.rnx"}) {
     const std::string a = slurp(dir.file("a") + "/" + f);
     EXPECT_FALSE(a.empty()) << f;
     EXPECT_EQ(a, slurp(dir.file("b") + "/" + f)) << f;
   }
   EXPECT_NE(slurp(dir.file("a") + "/imu.csv"), slurp(dir.file("c") + "/imu.csv"));
+  EXPECT_NE(slurp(dir.file("a") + "/rover.obs"), slurp(dir.file("c") + "/rover.obs"));
   // Everything written reads back through the checked readers.
   const DatasetDescription d = readDatasetDescription(dir.file("a"));
   EXPECT_EQ(readImuCsv(d.pathOf(d.imu)).size(), 15001u);

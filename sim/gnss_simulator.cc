@@ -1,0 +1,168 @@
+#include "sim/gnss_simulator.h"
+
+#include <cmath>
+
+#include "common/geodesy/wgs84.h"
+#include "common/math/so3.h"
+
+namespace giocal::sim {
+
+namespace {
+
+constexpr double kEarthRadius = 6371e3, kIonoHeight = 350e3;
+
+double gauss(std::mt19937_64& rng, double sd) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  return n(rng) * sd;
+}
+
+// Simulator troposphere: exponential zenith delays and a continued-fraction-free mapping function
+// (1.001 / sqrt(0.002001 + sin^2 el)).
+double troposphere(double h, double el, double zwd) {
+  const double zhd = 2.3 * std::exp(-h / 7000.0);
+  return (zhd + zwd) * 1.001 / std::sqrt(0.002001 + std::sin(el) * std::sin(el));
+}
+
+// Simulator ionosphere: single layer at 350 km, delay on L1 for a vertical TEC [TECU].
+double ionosphereL1(double vtec, double el) {
+  const double f1 = 1575.42e6;
+  const double s = kEarthRadius * std::cos(el) / (kEarthRadius + kIonoHeight);
+  return 40.3e16 * vtec / (f1 * f1) / std::sqrt(1.0 - s * s);
+}
+
+struct Receiver {
+  double clock, drift;  // [s], [s/s]
+  double zwd;           // zenith wet delay [m]
+};
+
+struct Geometry {
+  double range, range_rate, clock, clock_drift, el, az;
+};
+
+// Exact light-time solution: transmission time, Sagnac rotation by the flight time.
+bool geometry(const BroadcastOrbits& orbits, const SatId& sat, double t_rx,
+              const Eigen::Vector3d& p, const Eigen::Vector3d& v, char band, Geometry& g) {
+  const Ephemeris* eph = orbits.select(sat, t_rx);
+  if (!eph) return false;
+  double tau = 0.075;
+  SatelliteState s;
+  Eigen::Vector3d ps, vs;
+  for (int i = 0; i < 4; ++i) {
+    s = satelliteState(*eph, t_rx - tau);
+    const Eigen::Matrix3d R = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau));
+    ps = R * s.p_e;
+    vs = R * s.v_e;
+    tau = (ps - p).norm() / kSpeedOfLight;
+  }
+  const Eigen::Vector3d u = (ps - p) / (ps - p).norm();
+  g.range = (ps - p).norm();
+  g.range_rate = u.dot(vs - v);
+  g.clock = s.clock - groupDelay(*eph, band);
+  g.clock_drift = s.clock_drift;
+  const Geodetic geo = geodeticFromEcef(p);
+  const Eigen::Vector3d los = rotationEcefFromEnu(geo.lat, geo.lon).transpose() * u;
+  g.el = std::asin(los.z());
+  g.az = std::atan2(los.x(), los.y());
+  return true;
+}
+
+// BeiDou MEO satellites by PRN (BDS-2 C11, C12, C14; BDS-3 C19-C30, C32-C37, C41-C46).
+bool isBeidouMeo(const SatId& sat) {
+  const int p = sat.prn;
+  return p == 11 || p == 12 || p == 14 || (p >= 19 && p <= 30) || (p >= 32 && p <= 37) ||
+         (p >= 41 && p <= 46) || (p >= 47 && p <= 55);
+}
+
+}  // namespace
+
+std::vector<std::pair<char, char>> simulatedSignals(GnssSystem sys) {
+  switch (sys) {
+    case GnssSystem::kGps:
+      return {{'1', 'C'}, {'2', 'W'}};
+    case GnssSystem::kGalileo:
+      return {{'1', 'C'}, {'7', 'Q'}};
+    case GnssSystem::kBeidou:
+      return {{'2', 'I'}, {'7', 'I'}};
+    default:
+      return {};
+  }
+}
+
+SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbits,
+                           const AntennaTruth& rover, const Eigen::Vector3d& base_e, double t0,
+                           double t1, std::mt19937_64& rng) {
+  SimulatedGnss out;
+  out.base_e = base_e;
+  std::vector<SatId> sats;
+  for (const Ephemeris& e : orbits.nav().ephemerides) {
+    if (spec.systems.find(static_cast<char>(e.sat.sys)) == std::string::npos) continue;
+    if (spec.beidou_meo_only && e.sat.sys == GnssSystem::kBeidou && !isBeidouMeo(e.sat)) continue;
+    if (std::find(sats.begin(), sats.end(), e.sat) == sats.end()) sats.push_back(e.sat);
+  }
+  std::sort(sats.begin(), sats.end());
+  Receiver rx[2];
+  for (Receiver& r : rx) {
+    r.clock = gauss(rng, spec.clock_offset_sd);
+    r.drift = gauss(rng, spec.clock_drift_sd);
+    r.zwd = std::max(0.0, 0.1 + gauss(rng, spec.zenith_wet_sd));
+  }
+  const double mask = spec.elevation_mask_deg * M_PI / 180.0;
+  const LocalFrame frame(base_e);  // the ionosphere gradient is measured from the base
+  const double dt = 1.0 / spec.rate_hz;
+  const long n = static_cast<long>(std::floor((t1 - t0) * spec.rate_hz + 1e-9));
+  std::uniform_int_distribution<int> amb(-100000, 100000);
+  for (long k = 0; k <= n; ++k) {
+    const double tag = t0 + static_cast<double>(k) * dt;
+    for (int r = 0; r < 2; ++r) {
+      Receiver& rc = rx[r];
+      ObsEpoch ep;
+      ep.t = tag;
+      const double t_true = tag - rc.clock;
+      Eigen::Vector3d p, v = Eigen::Vector3d::Zero();
+      if (r == 0) {
+        rover(t_true, p, v);
+      } else {
+        p = base_e;
+      }
+      const Geodetic geo = geodeticFromEcef(p);
+      // VTEC varies slowly in time and space (a plane gradient across the area).
+      const Eigen::Vector3d d_enu = frame.enuFromEcef(p);
+      const double vtec = spec.vtec_tecu * (1.0 + 0.1 * std::sin(2 * M_PI * (tag - t0) / 3600.0)) *
+                          (1.0 + spec.vtec_gradient * (d_enu.x() + d_enu.y()));
+      for (const SatId& sat : sats) {
+        SatObs so;
+        so.sat = sat;
+        for (const auto& [band, attr] : simulatedSignals(sat.sys)) {
+          Geometry g;
+          if (!geometry(orbits, sat, t_true, p, v, band, g) || g.el < mask) continue;
+          const double f = carrierFrequency(sat.sys, band);
+          const double lambda = kSpeedOfLight / f;
+          const double iono = ionosphereL1(vtec, g.el) * std::pow(1575.42e6 / f, 2);
+          const double trop = troposphere(geo.h, g.el, rc.zwd);
+          const double sin_el = std::max(std::sin(g.el), 0.05);
+          const double factor = std::sqrt(1.0 + 1.0 / sin_el);
+          const double common = g.range + kSpeedOfLight * (rc.clock - g.clock) + trop;
+          const auto key = std::make_tuple(r, sat, band);
+          if (!out.ambiguity.count(key)) out.ambiguity[key] = amb(rng);
+          SignalObs s;
+          s.band = band;
+          s.attr = attr;
+          s.P = common + iono + gauss(rng, spec.code_sigma * factor);
+          s.L =
+              (common - iono + gauss(rng, spec.phase_sigma * factor)) / lambda + out.ambiguity[key];
+          s.D = -(g.range_rate + kSpeedOfLight * (rc.drift - g.clock_drift)) / lambda +
+                gauss(rng, spec.doppler_sigma * factor) / lambda;
+          s.S = std::round((35.0 + 15.0 * sin_el) * 4.0) / 4.0;
+          so.signals.push_back(s);
+        }
+        if (!so.signals.empty()) ep.sats.push_back(so);
+      }
+      (r == 0 ? out.rover : out.base).push_back(ep);
+      // Clock: drift plus a random walk, advanced to the next epoch.
+      rc.clock += rc.drift * dt + gauss(rng, spec.clock_random_walk * std::sqrt(dt));
+    }
+  }
+  return out;
+}
+
+}  // namespace giocal::sim

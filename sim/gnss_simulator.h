@@ -1,0 +1,58 @@
+// GNSS observations for the rover antenna and a static base: pseudo-range, carrier phase (an
+// integer ambiguity per satellite and band), Doppler and C/N0 from broadcast orbits, with receiver
+// clocks as random processes, troposphere and ionosphere with a realistic rover-base differential,
+// and elevation-dependent noise. The atmosphere models here are the simulator's own, not the
+// estimators', so that a modelling error in one is not hidden by the same error in the other.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/observation.h"
+
+namespace giocal::sim {
+
+struct GnssSimSpec {
+  bool enabled = true;
+  std::string nav_file;  // broadcast orbits (RINEX nav), resolved to an absolute path
+  std::string systems = "GEC";
+  bool beidou_meo_only = false;  // drop BeiDou GEO and IGSO satellites (PRN 1-18, 31, 38-40, 56-63)
+  double rate_hz = 1.0;
+  double elevation_mask_deg = 10.0;
+  double code_sigma = 0.3;      // at zenith; sigma(el) = s sqrt(1 + 1/sin el) [m]
+  double phase_sigma = 0.003;   // [m]
+  double doppler_sigma = 0.03;  // [m/s]
+  Eigen::Vector3d base_offset_enu{3000.0, 2600.0, 5.0};  // base from the origin [m] (~4 km)
+  double clock_offset_sd = 1e-6;     // initial receiver clock offset, 1-sigma [s]
+  double clock_drift_sd = 1e-9;      // receiver clock drift, 1-sigma [s/s]
+  double clock_random_walk = 1e-11;  // [s/sqrt(s)]
+  double zenith_wet_sd = 0.01;       // per-receiver zenith wet delay difference [m]
+  double vtec_tecu = 15.0;           // vertical TEC at the origin [TECU]
+  double vtec_gradient = 5e-7;       // relative VTEC change per metre (0.5 ppm/m: 4 km -> 0.2 %)
+};
+
+/// The true antenna trajectory: ECEF position and velocity at GPS time t.
+using AntennaTruth = std::function<void(double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e)>;
+
+struct SimulatedGnss {
+  std::vector<ObsEpoch> rover, base;
+  Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
+  /// The integer ambiguity of each (receiver 0 rover / 1 base, satellite, band) [cycles].
+  std::map<std::tuple<int, SatId, char>, double> ambiguity;
+};
+
+/// Observations at t0, t0 + 1/rate, ... up to t1 (receiver time tags at whole steps).
+SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbits,
+                           const AntennaTruth& rover, const Eigen::Vector3d& base_e, double t0,
+                           double t1, std::mt19937_64& rng);
+
+/// Signals simulated per system: (band, attribute).
+std::vector<std::pair<char, char>> simulatedSignals(GnssSystem sys);
+
+}  // namespace giocal::sim

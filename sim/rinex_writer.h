@@ -1,0 +1,23 @@
+// Writer of RINEX 3.04 observation files (what the simulator produces).
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/gnss/observation.h"
+
+namespace giocal::sim {
+
+struct RinexObsHeader {
+  std::string marker = "SIM";
+  Eigen::Vector3d approx_position = Eigen::Vector3d::Zero();
+  double interval = 1.0;
+  std::map<char, std::vector<std::string>> obs_types;  // system -> codes ("C1C", "L1C", ...)
+};
+
+/// Writes `epochs` atomically; observations absent from a signal are left blank.
+void writeRinexObs(const std::string& path, const RinexObsHeader& header,
+                   const std::vector<ObsEpoch>& epochs);
+
+}  // namespace giocal::sim

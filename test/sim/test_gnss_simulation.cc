@@ -1,0 +1,177 @@
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/double_difference.h"
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs.h"
+#include "common/gnss/rtk_job.h"
+#include "common/math/rotation.h"
+#include "common/time/gps_time.h"
+#include "sim/simulator.h"
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+sim::SimConfig paper() {
+  return sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+}
+
+double sigmaAt(double s0, double el) {
+  return s0 * std::sqrt(1.0 + 1.0 / std::max(std::sin(el), 0.05));
+}
+
+TEST(GnssSimulation, DoubleDifferencesAtTheTruePositionsAreAtTheNoiseLevel) {
+  const sim::SimConfig cfg = paper();
+  const sim::SimulatedLogs logs = sim::simulate(cfg, 2);
+  const BroadcastOrbits orbits(readRinexNav(cfg.gnss.nav_file));
+  ASSERT_EQ(logs.gnss.rover.size(), 151u);
+  double code_sq = 0, phase_sq = 0, dphase_sq = 0;
+  int code_n = 0, phase_n = 0, dphase_n = 0;
+  std::map<SatId, double> last_phase_residual;
+  for (size_t k = 0; k < logs.gnss.rover.size(); ++k) {
+    const ObsEpoch& r = logs.gnss.rover[k];
+    const ObsEpoch& b = logs.gnss.base[k];
+    const Eigen::Vector3d& x = logs.antenna_e[k];
+    // GPS L1 double differences against the highest satellite.
+    std::vector<SdGeometry> geo;
+    std::vector<const SatObs*> ro, bo;
+    for (const SatObs& s : r.sats) {
+      const SatObs* sb = b.find(s.sat);
+      if (s.sat.sys != GnssSystem::kGps || !sb) continue;
+      const SignalObs* sr1 = s.bestOnBand('1');
+      const SignalObs* sb1 = sb->bestOnBand('1');
+      const auto pr = orbits.atReception(s.sat, r.t, sr1->P, '1', x);
+      const auto pb = orbits.atReception(s.sat, b.t, sb1->P, '1', logs.gnss.base_e);
+      SdGeometry g;
+      g.sat = s.sat;
+      g.sat_at_rover_e = pr->p_e;
+      g.base_range = (pb->p_e - logs.gnss.base_e).norm();
+      geo.push_back(g);
+      ro.push_back(&s);
+      bo.push_back(sb);
+    }
+    ASSERT_GE(geo.size(), 5u);
+    std::vector<double> el(geo.size());
+    const Geodetic gx = geodeticFromEcef(x);
+    for (size_t i = 0; i < geo.size(); ++i) {
+      const Eigen::Vector3d u = (geo[i].sat_at_rover_e - x).normalized();
+      el[i] = std::asin((rotationEcefFromEnu(gx.lat, gx.lon).transpose() * u).z());
+    }
+    const size_t ref = static_cast<size_t>(std::max_element(el.begin(), el.end()) - el.begin());
+    const double lambda = kSpeedOfLight / carrierFrequency(GnssSystem::kGps, '1');
+    for (size_t i = 0; i < geo.size(); ++i) {
+      if (i == ref) continue;
+      const double dd_range = ddRange(x, geo[i], geo[ref], nullptr);
+      auto sd = [&](size_t j, bool phase) {
+        const SignalObs* a = ro[j]->bestOnBand('1');
+        const SignalObs* c = bo[j]->bestOnBand('1');
+        return phase ? (a->L - c->L) * lambda : a->P - c->P;
+      };
+      const double var_code =
+          2 * (std::pow(sigmaAt(0.3, el[i]), 2) + std::pow(sigmaAt(0.3, el[ref]), 2));
+      const double var_phase =
+          2 * (std::pow(sigmaAt(0.003, el[i]), 2) + std::pow(sigmaAt(0.003, el[ref]), 2));
+      const double code = sd(i, false) - sd(ref, false) - dd_range;
+      code_sq += code * code / var_code;
+      ++code_n;
+      auto amb = [&](int rx, size_t j) { return logs.gnss.ambiguity.at({rx, geo[j].sat, '1'}); };
+      const double dd_n = (amb(0, i) - amb(1, i)) - (amb(0, ref) - amb(1, ref));
+      const double phase = sd(i, true) - sd(ref, true) - dd_range - lambda * dd_n;
+      phase_sq += phase * phase;
+      ++phase_n;
+      // Epoch-to-epoch differences remove the slowly varying atmosphere and leave the noise.
+      if (last_phase_residual.count(geo[i].sat) && k > 0) {
+        const double d = phase - last_phase_residual[geo[i].sat];
+        dphase_sq += d * d / (2 * var_phase);
+        ++dphase_n;
+      }
+      last_phase_residual[geo[i].sat] = phase;
+    }
+  }
+  const double code_rms = std::sqrt(code_sq / code_n);
+  const double phase_rms = std::sqrt(phase_sq / phase_n);
+  const double dphase_rms = std::sqrt(dphase_sq / dphase_n);
+  std::cout << "DD code normalized RMS " << code_rms << ", DD phase residual RMS "
+            << phase_rms * 1000
+            << " mm (noise + 4 km atmosphere), time-differenced DD phase normalized RMS "
+            << dphase_rms << "\n";
+  EXPECT_NEAR(code_rms, 1.0, 0.15);
+  EXPECT_LT(phase_rms, 0.02);
+  EXPECT_NEAR(dphase_rms, 1.0, 0.15);
+}
+
+struct PosRow {
+  int q;
+  double lat, lon, h;
+};
+
+std::map<std::string, PosRow> readPos(const std::string& path) {
+  std::map<std::string, PosRow> out;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '%') continue;
+    std::istringstream ss(line);
+    std::string d, t;
+    PosRow r;
+    ss >> d >> t >> r.lat >> r.lon >> r.h >> r.q;
+    out[d + " " + t.substr(0, 8)] = r;
+  }
+  return out;
+}
+
+// Share of epochs fixed and within 2 cm horizontal of the true antenna.
+double fixedWithin2cm(const sim::SimulatedLogs& logs, const std::string& pos) {
+  const auto rows = readPos(pos);
+  int good = 0;
+  for (size_t k = 0; k < logs.gnss.rover.size(); ++k) {
+    const auto it =
+        rows.find(formatCalendar(calendarFromGpsSeconds(logs.gnss.rover[k].t)).substr(0, 19));
+    if (it == rows.end() || it->second.q != 1) continue;
+    const LocalFrame f(logs.antenna_e[k]);
+    const Eigen::Vector3d enu = f.enuFromEcef(ecefFromGeodetic(
+        Geodetic{it->second.lat * kDegToRad, it->second.lon * kDegToRad, it->second.h}));
+    good += enu.head<2>().norm() < 0.02;
+  }
+  return static_cast<double>(good) / static_cast<double>(logs.gnss.rover.size());
+}
+
+TEST(GnssSimulation, RtklibAndGiocalRtkFixThePaperPreset) {
+  test::TempDir dir;
+  const sim::SimConfig cfg = paper();
+  const sim::SimulatedLogs logs = sim::simulate(cfg, 4);
+  sim::writeDataset(logs, dir.file("paper"));
+  const std::string d = dir.file("paper");
+  const Eigen::Vector3d b = logs.gnss.base_e;
+  char cmd[2048];
+  std::ofstream(dir.file("sim.conf")) << "pos1-navsys=41\npos2-arthres=3\n";  // GPS+Galileo+BeiDou
+  std::snprintf(
+      cmd, sizeof(cmd),
+      "rnx2rtkp -k %s -t -p 2 -f 2 -m 15 -r %.4f %.4f %.4f -o %s %s/rover.obs %s/base.obs "
+      "%s/nav.rnx 2>/dev/null",
+      dir.file("sim.conf").c_str(), b.x(), b.y(), b.z(), dir.file("rtklib.pos").c_str(), d.c_str(),
+      d.c_str(), d.c_str());
+  ASSERT_EQ(std::system(cmd), 0) << "rnx2rtkp (Debian package rtklib) must be installed: " << cmd;
+  const double rtklib = fixedWithin2cm(logs, dir.file("rtklib.pos"));
+  RtkJob job;
+  job.rover = d + "/rover.obs";
+  job.base = d + "/base.obs";
+  job.nav = {d + "/nav.rnx"};
+  job.base_pos = b;
+  job.out = dir.file("giocal.pos");
+  runRtk(job);
+  const double giocal = fixedWithin2cm(logs, dir.file("giocal.pos"));
+  std::cout << "paper preset: epochs fixed within 2 cm horizontal: rnx2rtkp " << 100 * rtklib
+            << " %, giocal rtk " << 100 * giocal << " %\n";
+  EXPECT_GE(rtklib, 0.95);
+  EXPECT_GE(giocal, 0.95);
+}
+
+}  // namespace
+}  // namespace giocal
