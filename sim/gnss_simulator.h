@@ -19,7 +19,7 @@
 namespace giocal::sim {
 
 struct GnssSimSpec {
-  bool enabled = true;
+  bool enabled = false;            // set when the config has a gnss section
   std::string nav_file;  // broadcast orbits (RINEX nav), resolved to an absolute path
   std::string systems = "GEC";
   bool beidou_meo_only = false;  // drop BeiDou GEO and IGSO satellites (PRN 1-18, 31, 38-40, 56-63)
