@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <ostream>
 
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
 #include "common/io/dataset_description.h"
 #include "common/io/sensor_logs.h"
@@ -45,12 +47,28 @@ void runCheck(const std::string& folder, std::ostream& out) {
   std::vector<std::string> gnss{d.rover_obs, d.base_obs};
   gnss.insert(gnss.end(), d.nav.begin(), d.nav.end());
   std::vector<std::string> missing;
-  for (const auto& f : gnss) {
-    const bool present = std::filesystem::exists(d.pathOf(f));
-    out << "  " << f << ": "
-        << (present ? "present (the RINEX reader is not implemented yet, issue 3)" : "MISSING")
-        << "\n";
-    if (!present) missing.push_back(f);
+  for (const std::string& f : {d.rover_obs, d.base_obs}) {
+    if (!std::filesystem::exists(d.pathOf(f))) {
+      out << "  " << f << ": MISSING\n";
+      missing.push_back(f);
+      continue;
+    }
+    const ObsData obs = readRinexObs(d.pathOf(f));
+    double sats = 0;
+    for (const auto& e : obs.epochs) sats += static_cast<double>(e.sats.size());
+    printStats(out, f, timesOf(obs.epochs));
+    out << "            " << std::setprecision(1)
+        << sats / std::max<double>(1.0, static_cast<double>(obs.epochs.size()))
+        << " satellites per epoch (GPS, Galileo, BeiDou, QZSS)\n";
+  }
+  for (const std::string& f : d.nav) {
+    if (!std::filesystem::exists(d.pathOf(f))) {
+      out << "  " << f << ": MISSING\n";
+      missing.push_back(f);
+      continue;
+    }
+    const NavData nav = readRinexNav(d.pathOf(f));
+    out << "  " << f << ": " << nav.ephemerides.size() << " broadcast ephemerides\n";
   }
   const auto& c = d.initial_calibration;
   const Vec3 rpy = rpyFromRotation(c.mean.q_b_m.toRotationMatrix()) * kRadToDeg;

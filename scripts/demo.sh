@@ -1,25 +1,30 @@
 #!/usr/bin/env bash
-# The README's main job: install, build, simulate the paper preset, check the dataset and calibrate
-# it. Until the GNSS layer and the estimators exist (issues 3-6) it runs what exists and says
-# plainly what does not.
+# The README's main job: install, build, simulate the reference paper's dataset, check it, run RTK
+# on its GNSS data and calibrate it. Until the estimators exist (issues 5 and 6) it runs what
+# exists and says plainly what does not.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh"
 giocal="$root/build/apps/giocal"
 demo="$root/build/demo"   # the demo's own scratch folder inside build/
 rm -rf "$demo"
+mkdir -p "$demo"
 
 echo
-echo "== giocal simulate: the reference paper's simulation (IMU, odometer, truth)"
+echo "== giocal simulate: the reference paper's simulation (IMU, odometer, rover/base GNSS, truth)"
 "$giocal" simulate --config "$root/config/sim/paper.yaml" --out "$demo/paper" --seed 1
 echo
 echo "== giocal check: what the dataset holds"
-"$giocal" check --data "$demo/paper" || echo "(the dataset is incomplete until GNSS simulation exists)"
+"$giocal" check --data "$demo/paper"
 echo
-echo "== true calibration of the simulated robot ($demo/paper/truth_calib.yaml)"
+echo "== giocal rtk on the simulated rover and base"
+base=$(sed -n 's/.*base_position_ecef: \[\(.*\)\].*/\1/p' "$demo/paper/dataset.yaml" | tr -d ' ')
+"$giocal" rtk --rover "$demo/paper/rover.obs" --base "$demo/paper/base.obs" \
+  --nav "$demo/paper/nav.rnx" --base-pos "$base" --out "$demo/paper_rtk.pos"
+echo
+echo "== true calibration of the simulated robot (what calibrate must find)"
 grep -v '^#' "$demo/paper/truth_calib.yaml"
 echo
 echo "== not implemented yet"
-for cmd in rtk calibrate compare; do
-  "$giocal" "$cmd" 2>&1 || true
-done
+"$giocal" calibrate --data "$demo/paper" --out "$demo/calib" 2>&1 || true
+"$giocal" compare --data "$demo/paper" 2>&1 || true
