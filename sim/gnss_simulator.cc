@@ -1,6 +1,7 @@
 #include "sim/gnss_simulator.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "common/geodesy/wgs84.h"
 #include "common/math/so3.h"
@@ -75,6 +76,34 @@ bool isBeidouMeo(const SatId& sat) {
 
 }  // namespace
 
+SceneSpec sceneDefaults(const std::string& type) {
+  SceneSpec s;
+  s.type = type;
+  if (type == "few_trees") {
+    s.block_probability = 0.15;
+    s.outlier_probability = 0.02;
+    s.outlier_m = 5.0;
+    s.extra_phase_sigma = 0.003;
+    s.slip_probability = 0.002;
+  } else if (type == "more_trees") {
+    s.block_probability = 0.35;
+    s.outlier_probability = 0.05;
+    s.outlier_m = 10.0;
+    s.extra_phase_sigma = 0.006;
+    s.slip_probability = 0.01;
+  } else if (type == "building") {
+    s.building_side = "left";
+    s.outlier_probability = 0.08;
+    s.outlier_m = 15.0;
+    s.extra_phase_sigma = 0.004;
+    s.slip_probability = 0.005;
+  } else if (type != "open_sky") {
+    throw std::invalid_argument("unknown scene type '" + type +
+                                "' (open_sky, few_trees, more_trees, building)");
+  }
+  return s;
+}
+
 std::vector<std::pair<char, char>> simulatedSignals(GnssSystem sys) {
   switch (sys) {
     case GnssSystem::kGps:
@@ -110,7 +139,9 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
   const LocalFrame frame(base_e);  // the ionosphere gradient is measured from the base
   const double dt = 1.0 / spec.rate_hz;
   const long n = static_cast<long>(std::floor((t1 - t0) * spec.rate_hz + 1e-9));
-  std::uniform_int_distribution<int> amb(-100000, 100000);
+  std::uniform_int_distribution<int> amb(-100000, 100000), slip_size(1, 10);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  double heading = 0.0;  // direction of travel (azimuth from north), kept while standing
   for (long k = 0; k <= n; ++k) {
     const double tag = t0 + static_cast<double>(k) * dt;
     for (int r = 0; r < 2; ++r) {
@@ -125,6 +156,14 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
         p = base_e;
       }
       const Geodetic geo = geodeticFromEcef(p);
+      const SceneSpec* scene = nullptr;
+      if (r == 0) {
+        for (const SceneSpec& sc : spec.scenes) {
+          if (tag - t0 >= sc.start && tag - t0 < sc.end) scene = &sc;
+        }
+        const Eigen::Vector3d v_enu = rotationEcefFromEnu(geo.lat, geo.lon).transpose() * v;
+        if (v_enu.head<2>().norm() > 0.05) heading = std::atan2(v_enu.x(), v_enu.y());
+      }
       // VTEC varies slowly in time and space (a plane gradient across the area).
       const Eigen::Vector3d d_enu = frame.enuFromEcef(p);
       const double vtec = spec.vtec_tecu * (1.0 + 0.1 * std::sin(2 * M_PI * (tag - t0) / 3600.0)) *
@@ -132,6 +171,24 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
       for (const SatId& sat : sats) {
         SatObs so;
         so.sat = sat;
+        // Scene effects drawn once per satellite and epoch (shadowing and NLOS hit every band).
+        bool blocked = false;
+        double nlos = 0.0;
+        if (scene) {
+          Geometry g0;
+          if (geometry(orbits, sat, t_true, p, v, simulatedSignals(sat.sys).front().first, g0)) {
+            double rel = std::remainder(g0.az - heading, 2 * M_PI);  // > 0: right of travel
+            const bool on_side = scene->building_side == "left" ? rel < 0 : rel > 0;
+            if (!scene->building_side.empty() && on_side &&
+                g0.el < scene->building_elevation_deg * M_PI / 180.0) {
+              blocked = true;
+            }
+            if (u01(rng) < scene->block_probability * (1.0 - g0.el / (M_PI / 2))) blocked = true;
+            if (u01(rng) < scene->outlier_probability)
+              nlos = scene->outlier_m * (0.3 + 0.7 * u01(rng));
+          }
+        }
+        if (blocked) continue;
         for (const auto& [band, attr] : simulatedSignals(sat.sys)) {
           Geometry g;
           if (!geometry(orbits, sat, t_true, p, v, band, g) || g.el < mask) continue;
@@ -147,9 +204,15 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           SignalObs s;
           s.band = band;
           s.attr = attr;
-          s.P = common + iono + gauss(rng, spec.code_sigma * factor);
-          s.L =
-              (common - iono + gauss(rng, spec.phase_sigma * factor)) / lambda + out.ambiguity[key];
+          if (scene && u01(rng) < scene->slip_probability) {
+            out.ambiguity[key] += (u01(rng) < 0.5 ? -1 : 1) * slip_size(rng);
+            if (u01(rng) < 0.5) s.lli = 1;  // half of the slips are flagged by the receiver
+            ++out.slips;
+          }
+          const double extra = scene ? gauss(rng, scene->extra_phase_sigma) : 0.0;
+          s.P = common + iono + nlos + gauss(rng, spec.code_sigma * factor);
+          s.L = (common - iono + extra + gauss(rng, spec.phase_sigma * factor)) / lambda +
+                out.ambiguity[key];
           s.D = -(g.range_rate + kSpeedOfLight * (rc.drift - g.clock_drift)) / lambda +
                 gauss(rng, spec.doppler_sigma * factor) / lambda;
           s.S = std::round((35.0 + 15.0 * sin_el) * 4.0) / 4.0;

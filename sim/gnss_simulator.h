@@ -18,8 +18,26 @@
 
 namespace giocal::sim {
 
+/// A stretch of the trajectory (by time from the start) with its own sky and signal conditions.
+struct SceneSpec {
+  std::string type = "open_sky";   // open_sky | few_trees | more_trees | building
+  double start = 0.0, end = 1e9;   // [s] from the start of the dataset
+  double block_probability = 0.0;  // chance per epoch that a satellite is shadowed, at the horizon
+                                   // (falling linearly to zero at the zenith)
+  std::string building_side;       // "left" or "right" of the direction of travel: that half of the
+                                   // sky below `building_elevation_deg` is blocked
+  double building_elevation_deg = 60.0;
+  double outlier_probability = 0.0;  // NLOS/multipath pseudo-range errors, per satellite and epoch
+  double outlier_m = 0.0;            // their size: uniform in [0.3, 1] times this, positive [m]
+  double extra_phase_sigma = 0.0;    // added phase noise [m]
+  double slip_probability = 0.0;     // cycle slips per satellite, band and epoch (half flagged LLI)
+};
+
+/// The defaults of a scene type (the four scenes of the reference paper's field test).
+SceneSpec sceneDefaults(const std::string& type);
+
 struct GnssSimSpec {
-  bool enabled = false;            // set when the config has a gnss section
+  bool enabled = false;  // set when the config has a gnss section
   std::string nav_file;  // broadcast orbits (RINEX nav), resolved to an absolute path
   std::string systems = "GEC";
   bool beidou_meo_only = false;  // drop BeiDou GEO and IGSO satellites (PRN 1-18, 31, 38-40, 56-63)
@@ -35,6 +53,7 @@ struct GnssSimSpec {
   double zenith_wet_sd = 0.01;       // per-receiver zenith wet delay difference [m]
   double vtec_tecu = 15.0;           // vertical TEC at the origin [TECU]
   double vtec_gradient = 5e-7;       // relative VTEC change per metre (0.5 ppm/m: 4 km -> 0.2 %)
+  std::vector<SceneSpec> scenes;     // the rover's scenes; open sky where none applies
 };
 
 /// The true antenna trajectory: ECEF position and velocity at GPS time t.
@@ -45,6 +64,7 @@ struct SimulatedGnss {
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   /// The integer ambiguity of each (receiver 0 rover / 1 base, satellite, band) [cycles].
   std::map<std::tuple<int, SatId, char>, double> ambiguity;
+  int slips = 0;  // cycle slips put into the rover's phases by scenes
 };
 
 /// Observations at t0, t0 + 1/rate, ... up to t1 (receiver time tags at whole steps).

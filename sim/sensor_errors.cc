@@ -57,7 +57,19 @@ OdomSample OdometerErrors::measure(double t, double speed, double yaw_rate, doub
                                    std::mt19937_64& rng) {
   OdomSample s;
   s.t = t;
-  s.v = quantize(speed / (1.0 + s_v_) + gaussian(rng, spec_.speed_sigma), spec_.speed_quantum);
+  double factor = 1.0;
+  if (slip_left_ > 0.0) {
+    slip_left_ -= dt;
+    factor = spec_.slip_speed_factor;
+  } else if (std::abs(speed) > 0.05 && spec_.slip_rate_per_min > 0.0) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    if (u(rng) < spec_.slip_rate_per_min / 60.0 * dt) {
+      slip_left_ = spec_.slip_duration_s;
+      ++slip_events_;
+    }
+  }
+  s.v = quantize(factor * speed / (1.0 + s_v_) + gaussian(rng, spec_.speed_sigma),
+                 spec_.speed_quantum);
   s.w = quantize(yaw_rate / (1.0 + s_w_) + gaussian(rng, spec_.yaw_rate_sigma_deg_s * kDeg),
                  spec_.yaw_rate_quantum_deg_s * kDeg);
   s_v_ += gaussian(rng, spec_.scale_drift_per_sqrt_s * std::sqrt(dt));

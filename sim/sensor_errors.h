@@ -32,14 +32,18 @@ class OdometerErrors {
  public:
   OdometerErrors(const OdometerErrorSpec& spec, double s_v, double s_w)
       : spec_(spec), s_v_(s_v), s_w_(s_w) {}
-  /// measured = true / (1 + s) + noise, quantized; the scales drift as random walks.
+  /// measured = true / (1 + s) + noise, quantized; the scales drift as random walks; while the
+  /// wheels slip (Poisson events while driving) the measured speed is slip_speed_factor too high.
   OdomSample measure(double t, double speed, double yaw_rate, double dt, std::mt19937_64& rng);
   double sV() const { return s_v_; }
   double sW() const { return s_w_; }
+  int slipEvents() const { return slip_events_; }
 
  private:
   OdometerErrorSpec spec_;
   double s_v_, s_w_;
+  double slip_left_ = 0.0;  // time left in the current wheel-slip event [s]
+  int slip_events_ = 0;
 };
 
 }  // namespace giocal::sim

@@ -116,6 +116,37 @@ SimConfig readSimConfig(const std::string& path) {
     g.zenith_wet_sd = y.numberOr("gnss.zenith_wet_sd", g.zenith_wet_sd, 0.0, 1.0);
     g.vtec_tecu = y.numberOr("gnss.vtec_tecu", g.vtec_tecu, 0.0, 300.0);
     g.vtec_gradient = y.numberOr("gnss.vtec_gradient", g.vtec_gradient, 0.0, 1e-4);
+    if (y.has("gnss.scenes")) {
+      const YAML::Node scenes = y.root()["gnss"]["scenes"];
+      if (!scenes.IsSequence()) y.fail("gnss.scenes", "needs a list of scenes");
+      for (size_t i = 0; i < scenes.size(); ++i) {
+        YAML::Node wrapper;
+        wrapper["s"] = scenes[i];
+        const YamlFields f(path, wrapper);
+        SceneSpec sc;
+        try {
+          sc = sceneDefaults(f.text("s.type"));
+        } catch (const std::invalid_argument& e) {
+          f.fail("s.type", e.what());
+        }
+        sc.start = f.number("s.start", 0.0, 1e7);
+        sc.end = f.number("s.end", sc.start, 1e7);
+        sc.block_probability = f.numberOr("s.block_probability", sc.block_probability, 0.0, 1.0);
+        sc.building_side = f.textOr("s.side", sc.building_side);
+        if (!sc.building_side.empty() && sc.building_side != "left" &&
+            sc.building_side != "right") {
+          f.fail("s.side", "must be left or right");
+        }
+        sc.building_elevation_deg =
+            f.numberOr("s.building_elevation_deg", sc.building_elevation_deg, 0.0, 90.0);
+        sc.outlier_probability =
+            f.numberOr("s.outlier_probability", sc.outlier_probability, 0.0, 1.0);
+        sc.outlier_m = f.numberOr("s.outlier_m", sc.outlier_m, 0.0, 1000.0);
+        sc.extra_phase_sigma = f.numberOr("s.extra_phase_sigma", sc.extra_phase_sigma, 0.0, 1.0);
+        sc.slip_probability = f.numberOr("s.slip_probability", sc.slip_probability, 0.0, 1.0);
+        g.scenes.push_back(sc);
+      }
+    }
   }
 
   c.guess_sd_s_v = y.numberOr("initial_guess_sigma.s_v", c.guess_sd_s_v, 1e-9, 0.5);

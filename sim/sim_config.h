@@ -32,6 +32,9 @@ struct OdometerErrorSpec {
   double scale_drift_per_sqrt_s = 0.0;  // random walk of s_v and s_w [1/sqrt(s)]
   double speed_quantum = 0.0;           // measurement resolution [m/s]; 0 = none
   double yaw_rate_quantum_deg_s = 0.0;
+  double slip_rate_per_min = 0.0;  // wheel-slip events per minute of driving
+  double slip_duration_s = 0.5;    // length of one event [s]
+  double slip_speed_factor = 1.3;  // measured / true speed while slipping (wheels spin)
 };
 
 struct SimConfig {
