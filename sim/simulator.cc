@@ -194,6 +194,11 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
     writeRinexObs(d.pathOf(d.base_obs), h, logs.gnss.base);
     std::filesystem::copy_file(logs.nav_file, d.pathOf(d.nav.front()),
                                std::filesystem::copy_options::overwrite_existing);
+    // The source may be read-only (shipped data); the dataset's copy belongs to the user.
+    std::filesystem::permissions(d.pathOf(d.nav.front()), std::filesystem::perms::owner_read |
+                                                              std::filesystem::perms::owner_write |
+                                                              std::filesystem::perms::group_read |
+                                                              std::filesystem::perms::others_read);
   }
   writeDatasetDescription(d);
 }
