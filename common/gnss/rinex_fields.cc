@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "common/io/text.h"
+
 namespace giocal::rinex {
 
 std::string field(const std::string& line, int col, int width) {
@@ -12,12 +14,7 @@ std::string field(const std::string& line, int col, int width) {
   return out;
 }
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
+std::string trim(const std::string& s) { return giocal::trim(s); }
 
 std::string label(const std::string& line) { return trim(field(line, 61, 20)); }
 

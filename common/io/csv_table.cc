@@ -9,6 +9,7 @@
 
 #include "common/io/atomic_file.h"
 #include "common/io/data_error.h"
+#include "common/io/text.h"
 
 namespace giocal {
 
@@ -21,13 +22,6 @@ std::vector<std::string> splitFields(const std::string& line) {
   while (std::getline(ss, field, ',')) out.push_back(field);
   if (!line.empty() && line.back() == ',') out.emplace_back();
   return out;
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
 }
 
 std::string joinHeader(const std::vector<std::string>& header) {
