@@ -22,4 +22,23 @@ int chooseReference(const std::vector<SdGeometry>& geometry, const std::vector<i
   return best;
 }
 
+Eigen::MatrixXd ddCovariance(const std::vector<DdObservation>& obs,
+                             const std::vector<std::pair<double, double>>& var) {
+  const long m = static_cast<long>(obs.size());
+  Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
+  auto v = [&](const DdObservation& o, int idx) {
+    const auto& p = var[static_cast<size_t>(idx)];
+    return o.phase ? p.second : p.first;
+  };
+  for (long a = 0; a < m; ++a) {
+    const DdObservation& o = obs[static_cast<size_t>(a)];
+    R(a, a) = v(o, o.sat_index);
+    for (long b = 0; b < m; ++b) {
+      const DdObservation& ob = obs[static_cast<size_t>(b)];
+      if (ob.ref == o.ref && ob.band == o.band && ob.phase == o.phase) R(a, b) += v(o, o.ref_index);
+    }
+  }
+  return R;
+}
+
 }  // namespace giocal

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "common/gnss/satellite.h"
@@ -38,5 +39,10 @@ struct DdObservation {
 /// above `keep_elevation` (keeping the reference avoids re-forming every DD ambiguity).
 int chooseReference(const std::vector<SdGeometry>& geometry, const std::vector<int>& candidates,
                     int previous, double keep_elevation);
+
+/// Covariance of DD rows: each row's own and its reference's undifferenced variance, the
+/// reference's shared between rows of the same reference, band and kind.
+Eigen::MatrixXd ddCovariance(const std::vector<DdObservation>& obs,
+                             const std::vector<std::pair<double, double>>& undiff_variance);
 
 }  // namespace giocal

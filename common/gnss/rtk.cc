@@ -213,20 +213,26 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
 
   // Measurement update, linearized at the prediction, with an innovation gate.
   std::vector<bool> active(obs.size(), true);
-  auto undiff_var = [&](const DdObservation& o, int idx) {
-    const double el = geometry[static_cast<size_t>(idx)].el;
-    return 2.0 * (o.phase ? options_.phase.variance(el) : options_.code.variance(el));
-  };
+  // Undifferenced variances (rover plus base) of each satellite's code and phase.
+  std::vector<std::pair<double, double>> undiff_var;
+  for (const SdGeometry& g : geometry) {
+    undiff_var.push_back({2.0 * options_.code.variance(g.el), 2.0 * options_.phase.variance(g.el)});
+  }
   for (int attempt = 0; attempt < 8; ++attempt) {
     std::vector<int> rows;
+    std::vector<DdObservation> used_obs;
     for (size_t k = 0; k < obs.size(); ++k) {
-      if (active[k]) rows.push_back(static_cast<int>(k));
+      if (active[k]) {
+        rows.push_back(static_cast<int>(k));
+        used_obs.push_back(obs[k]);
+      }
     }
     const long m = static_cast<long>(rows.size()), n = x_.size();
-    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, n), R = Eigen::MatrixXd::Zero(m, m);
+    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m, n);
+    const Eigen::MatrixXd R = ddCovariance(used_obs, undiff_var);
     Eigen::VectorXd v(m);
     for (long a = 0; a < m; ++a) {
-      const DdObservation& o = obs[static_cast<size_t>(rows[static_cast<size_t>(a)])];
+      const DdObservation& o = used_obs[static_cast<size_t>(a)];
       Eigen::RowVector3d J;
       double pred = ddRange(x_.head<3>(), geometry[static_cast<size_t>(o.sat_index)],
                             geometry[static_cast<size_t>(o.ref_index)], &J);
@@ -238,13 +244,6 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
         H(a, ir) = -o.lambda;
       }
       v[a] = o.value - pred;
-      // DD covariance: the reference satellite's SD variance is shared by the rows of its group.
-      R(a, a) = undiff_var(o, o.sat_index);
-      for (long b = 0; b < m; ++b) {
-        const DdObservation& ob = obs[static_cast<size_t>(rows[static_cast<size_t>(b)])];
-        if (ob.ref == o.ref && ob.band == o.band && ob.phase == o.phase)
-          R(a, b) += undiff_var(o, o.ref_index);
-      }
     }
     const Eigen::MatrixXd S = H * P_ * H.transpose() + R;
     // Gate: the worst normalized innovation above the threshold is removed and the update redone.
