@@ -1,0 +1,95 @@
+#include "ekf/state_registry.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "common/math/rotation.h"
+
+namespace giocal {
+
+void StateRegistry::add(const StateBlock& block, const Eigen::VectorXd& value,
+                        const Eigen::MatrixXd& covariance) {
+  if (has(block.name)) throw std::invalid_argument("state variable '" + block.name + "' exists");
+  if (value.size() != block.ambientSize() || covariance.rows() != block.tangentSize() ||
+      covariance.cols() != block.tangentSize()) {
+    throw std::invalid_argument("state variable '" + block.name + "': value or covariance size");
+  }
+  const int n = dim(), m = block.tangentSize();
+  P_.conservativeResize(n + m, n + m);
+  P_.bottomRows(m).setZero();
+  P_.rightCols(m).setZero();
+  P_.bottomRightCorner(m, m) = covariance;
+  vars_[block.name] = {block, value, n};
+  order_.push_back(block.name);
+}
+
+void StateRegistry::remove(const std::string& name) {
+  const int off = offset(name), m = block(name).tangentSize(), n = dim();
+  Eigen::MatrixXd P(n - m, n - m);
+  const int tail = n - off - m;
+  P.topLeftCorner(off, off) = P_.topLeftCorner(off, off);
+  P.topRightCorner(off, tail) = P_.topRightCorner(off, tail);
+  P.bottomLeftCorner(tail, off) = P_.bottomLeftCorner(tail, off);
+  P.bottomRightCorner(tail, tail) = P_.bottomRightCorner(tail, tail);
+  P_ = P;
+  vars_.erase(name);
+  order_.erase(std::find(order_.begin(), order_.end(), name));
+  for (auto& [n2, v] : vars_) {
+    if (v.offset > off) v.offset -= m;
+  }
+}
+
+int StateRegistry::offset(const std::string& name) const {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+  return it->second.offset;
+}
+
+const StateBlock& StateRegistry::block(const std::string& name) const {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+  return it->second.block;
+}
+
+const Eigen::VectorXd& StateRegistry::value(const std::string& name) const {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+  return it->second.value;
+}
+
+Eigen::VectorXd& StateRegistry::value(const std::string& name) {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+  return it->second.value;
+}
+
+std::vector<std::string> StateRegistry::names() const { return order_; }
+
+Eigen::MatrixXd StateRegistry::marginal(const std::string& name) const {
+  const int m = block(name).tangentSize(), off = offset(name);
+  return P_.block(off, off, m, m);
+}
+
+void StateRegistry::correct(const Eigen::VectorXd& dx) {
+  if (dx.size() != dim()) throw std::invalid_argument("correction size differs from the state");
+  for (auto& [name, v] : vars_) {
+    if (v.block.kind == BlockKind::kRotation) {
+      const Quat q = boxPlus(quatFromWxyz(v.value.data()), dx.segment<3>(v.offset));
+      quatToWxyz(q, v.value.data());
+    } else {
+      v.value += dx.segment(v.offset, v.block.size);
+    }
+  }
+}
+
+std::vector<BlockBinding> StateRegistry::bind(const std::vector<std::string>& names) const {
+  std::vector<BlockBinding> out;
+  for (const std::string& n : names) {
+    const auto it = vars_.find(n);
+    if (it == vars_.end()) throw std::out_of_range("no state variable '" + n + "' to bind");
+    out.push_back({it->second.value.data(), it->second.offset});
+  }
+  return out;
+}
+
+}  // namespace giocal
