@@ -17,7 +17,8 @@ class StateRegistry {
  public:
   /// Adds a variable at the end of the state with its value (ambient: [w,x,y,z] for rotations)
   /// and its covariance (tangent), uncorrelated with the rest. Throws if the name exists.
-  void add(const StateBlock& block, const Eigen::VectorXd& value, const Eigen::MatrixXd& covariance);
+  void add(const StateBlock& block, const Eigen::VectorXd& value,
+           const Eigen::MatrixXd& covariance);
   /// Removes a variable and its rows and columns (marginalization of a Gaussian).
   void remove(const std::string& name);
 

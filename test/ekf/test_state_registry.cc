@@ -19,7 +19,8 @@ TEST(StateRegistry, AddRemoveKeepsTheCovarianceBlocks) {
   Eigen::VectorXd q(4);
   q << 1, 0, 0, 0;
   s.add(rotationBlock("q_n_b"), q, spd(3, 0.01));
-  s.add(vectorBlock("N:G05:1", 1), Eigen::VectorXd::Constant(1, 12.3), Eigen::MatrixXd::Constant(1, 1, 4.0));
+  s.add(vectorBlock("N:G05:1", 1), Eigen::VectorXd::Constant(1, 12.3),
+        Eigen::MatrixXd::Constant(1, 1, 4.0));
   s.add(vectorBlock("s_v", 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Constant(1, 1, 1e-4));
   EXPECT_EQ(s.dim(), 8);
   EXPECT_EQ(s.offset("N:G05:1"), 6);
@@ -33,10 +34,13 @@ TEST(StateRegistry, AddRemoveKeepsTheCovarianceBlocks) {
   EXPECT_FALSE(s.has("N:G05:1"));
   std::vector<int> keep{0, 1, 2, 3, 4, 5, 7};
   for (int i = 0; i < 7; ++i)
-    for (int j = 0; j < 7; ++j) EXPECT_EQ(s.covariance()(i, j), P(keep[static_cast<size_t>(i)], keep[static_cast<size_t>(j)]));
+    for (int j = 0; j < 7; ++j)
+      EXPECT_EQ(s.covariance()(i, j),
+                P(keep[static_cast<size_t>(i)], keep[static_cast<size_t>(j)]));
   EXPECT_EQ(s.names(), (std::vector<std::string>{"p_n_b", "q_n_b", "s_v"}));
-  EXPECT_THROW(s.add(vectorBlock("s_v", 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Identity(1, 1)),
-               std::invalid_argument);
+  EXPECT_THROW(
+      s.add(vectorBlock("s_v", 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Identity(1, 1)),
+      std::invalid_argument);
   EXPECT_THROW(s.offset("nothing"), std::out_of_range);
 }
 

@@ -1,0 +1,27 @@
+// propagateImu(): the EKF time update over one IMU interval, taken from the shared IMU model
+// (no mechanization restated here): the interval's preintegration predicts the mean, and its
+// residual Jacobians give the error-state transition F = -J_j^-1 J_i and noise J_j^-1 S J_j^-T.
+#pragma once
+
+#include "common/imu/imu_preintegration.h"
+#include "ekf/state_registry.h"
+
+namespace giocal {
+
+/// Names of the navigation variables the registry must hold.
+namespace nav_var {
+inline const char* const kP = "p_n_b";
+inline const char* const kQ = "q_n_b";
+inline const char* const kV = "v_n_b";
+inline const char* const kBa = "b_a";
+inline const char* const kBg = "b_g";
+}  // namespace nav_var
+
+NavState navState(const StateRegistry& s);
+void setNavState(StateRegistry& s, const NavState& x);
+
+/// Moves the navigation variables to the end of `pre`'s interval and propagates the covariance of
+/// the whole state (other variables keep their values and their cross-covariances are carried).
+void propagateImu(StateRegistry& s, const ImuPreintegration& pre);
+
+}  // namespace giocal
