@@ -11,30 +11,12 @@
 
 namespace giocal {
 
-std::vector<char> rtkBands(GnssSystem sys, int frequencies) {
-  std::vector<char> b;
-  switch (sys) {
-    case GnssSystem::kBeidou:
-      b = {'2', '7'};
-      break;
-    case GnssSystem::kGalileo:
-      b = {'1', '7'};
-      break;
-    default:
-      b = {'1', '2'};
-      break;
-  }
-  b.resize(static_cast<size_t>(std::clamp(frequencies, 1, 2)));
-  return b;
-}
-
 RtkFilter::RtkFilter(const BroadcastOrbits& orbits, const Eigen::Vector3d& base_e,
                      const RtkOptions& options)
     : orbits_(orbits),
       base_e_(base_e),
       options_(options),
-      rover_slips_(options.slips),
-      base_slips_(options.slips) {}
+      dd_builder_(orbits, base_e, options.dd) {}
 
 int RtkFilter::ambiguityIndex(const AmbKey& key) const {
   const auto it = std::find(amb_keys_.begin(), amb_keys_.end(), key);
@@ -95,7 +77,6 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
     P_.topLeftCorner<3, 3>() = Eigen::Matrix3d::Identity() * 100.0;
     P_.block<3, 3>(3, 3) = Eigen::Matrix3d::Identity() * 10.0;
     amb_keys_.clear();
-    refs_.clear();
     initialized_ = true;
   } else {
     const long n = x_.size();
@@ -118,94 +99,18 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   }
   t_last_ = rover.t;
 
-  // Cycle slips reset the ambiguities of either receiver's slipped phases.
-  rover_slips_.update(rover);
-  base_slips_.update(*base);
-
-  // The satellites as each receiver saw them (the time tags and pseudo-ranges carry the same
-  // receiver clock error, so tag minus range is the transmission time for both).
-  const double mask = options_.elevation_mask_deg * M_PI / 180.0;
-  struct SatRow {
-    SdGeometry geo;
-    const SatObs* r;
-    const SatObs* b;
-  };
-  std::vector<SatRow> sats;
-  for (const SatObs& ro : rover.sats) {
-    if (std::find(options_.systems.begin(), options_.systems.end(), ro.sat.sys) ==
-        options_.systems.end())
-      continue;
-    const SatObs* bo = base->find(ro.sat);
-    if (!bo) continue;
-    const SignalObs* rp = ro.bestOnBand(primaryBand(ro.sat.sys));
-    const SignalObs* bp = bo->bestOnBand(primaryBand(ro.sat.sys));
-    if (!rp || !bp) continue;
-    const auto sr = orbits_.atReception(ro.sat, rover.t, rp->P, rp->band, x_.head<3>());
-    const auto sb = orbits_.atReception(ro.sat, base->t, bp->P, bp->band, base_e_);
-    if (!sr || !sb) continue;
-    SdGeometry g;
-    g.sat = ro.sat;
-    g.sat_at_rover_e = sr->p_e;
-    g.base_range = (sb->p_e - base_e_).norm();
-    double az = 0.0;
-    elevationAzimuth(x_.head<3>(), sr->p_e, g.el, az);
-    if (g.el < mask) continue;
-    sats.push_back({g, &ro, bo});
-  }
-  std::vector<SdGeometry> geometry;
-  for (const auto& s : sats) geometry.push_back(s.geo);
-
-  // Single differences per band; new or slipped ambiguities (re)initialized from code.
-  std::vector<DdObservation> obs;
+  // This epoch's double differences; slipped or new ambiguities (re)start from code, and those
+  // no longer observed are dropped.
+  const DdEpoch ep = dd_builder_.build(rover, *base, x_.head<3>());
+  const std::vector<SdGeometry>& geometry = ep.geometry;
+  const std::vector<DdObservation>& obs = ep.obs;
   std::map<AmbKey, bool> seen;
-  for (GnssSystem sys : options_.systems) {
-    for (char band : rtkBands(sys, options_.frequencies)) {
-      std::vector<int> cand;
-      std::map<int, std::pair<double, double>> sd;  // index -> (SD code, SD phase [m])
-      const double lambda = kSpeedOfLight / carrierFrequency(sys, band);
-      for (size_t i = 0; i < sats.size(); ++i) {
-        if (sats[i].geo.sat.sys != sys) continue;
-        const SignalObs* r = sats[i].r->bestOnBand(band);
-        const SignalObs* b = sats[i].b->bestOnBand(band);
-        if (!r || !b || std::isnan(r->L) || std::isnan(b->L)) continue;
-        const AmbKey key{sats[i].geo.sat, band};
-        const double sd_p = r->P - b->P, sd_l = (r->L - b->L) * lambda;
-        if (rover_slips_.slipped(key.first, band) || base_slips_.slipped(key.first, band)) {
-          removeAmbiguity(key);
-        }
-        if (ambiguityIndex(key) < 0)
-          addAmbiguity(key, (sd_l - sd_p) / lambda, std::pow(10.0 / lambda, 2));
-        seen[key] = true;
-        cand.push_back(static_cast<int>(i));
-        sd[static_cast<int>(i)] = {sd_p, sd_l};
-      }
-      if (cand.size() < 2) continue;
-      const auto prev = refs_.find({sys, band});
-      int prev_idx = -1;
-      for (int i : cand) {
-        if (prev != refs_.end() && geometry[static_cast<size_t>(i)].sat == prev->second)
-          prev_idx = i;
-      }
-      const int ref = chooseReference(geometry, cand, prev_idx, 30.0 * M_PI / 180.0);
-      refs_[{sys, band}] = geometry[static_cast<size_t>(ref)].sat;
-      for (int i : cand) {
-        if (i == ref) continue;
-        for (bool phase : {true, false}) {
-          DdObservation o;
-          o.sat = geometry[static_cast<size_t>(i)].sat;
-          o.ref = geometry[static_cast<size_t>(ref)].sat;
-          o.band = band;
-          o.phase = phase;
-          o.lambda = lambda;
-          o.sat_index = i;
-          o.ref_index = ref;
-          o.value = phase ? sd[i].second - sd[ref].second : sd[i].first - sd[ref].first;
-          obs.push_back(o);
-        }
-      }
-    }
+  for (const SdAmbiguity& a : ep.ambiguities) {
+    const AmbKey key{a.sat, a.band};
+    if (a.slipped) removeAmbiguity(key);
+    if (ambiguityIndex(key) < 0) addAmbiguity(key, a.code_value, std::pow(10.0 / a.lambda, 2));
+    seen[key] = true;
   }
-  // Ambiguities of satellites no longer observed are dropped.
   for (const AmbKey& k : std::vector<AmbKey>(amb_keys_)) {
     if (!seen.count(k)) removeAmbiguity(k);
   }
@@ -213,11 +118,7 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
 
   // Measurement update, linearized at the prediction, with an innovation gate.
   std::vector<bool> active(obs.size(), true);
-  // Undifferenced variances (rover plus base) of each satellite's code and phase.
-  std::vector<std::pair<double, double>> undiff_var;
-  for (const SdGeometry& g : geometry) {
-    undiff_var.push_back({2.0 * options_.code.variance(g.el), 2.0 * options_.phase.variance(g.el)});
-  }
+  const auto& undiff_var = ep.undiff_variance;
   for (int attempt = 0; attempt < 8; ++attempt) {
     std::vector<int> rows;
     std::vector<DdObservation> used_obs;

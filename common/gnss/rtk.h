@@ -10,6 +10,7 @@
 
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/cycle_slip.h"
+#include "common/gnss/dd_epoch.h"
 #include "common/gnss/lambda.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/spp.h"
@@ -18,12 +19,7 @@
 namespace giocal {
 
 struct RtkOptions {
-  double elevation_mask_deg = 15.0;
-  int frequencies = 2;  // 1: L1/E1/B1I only; 2: plus L2/E5b/B2I
-  std::vector<GnssSystem> systems{GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou,
-                                  GnssSystem::kQzss};
-  ElevationNoise code{0.3};       // undifferenced code noise at zenith [m]
-  ElevationNoise phase{0.003};    // undifferenced phase noise at zenith [m]
+  DdOptions dd;                   // mask, frequencies, systems, noise, cycle slips
   double accel_noise = 1.0;       // rover acceleration density [m/s^2/sqrt(Hz)]
   double ambiguity_noise = 1e-4;  // SD ambiguity random walk [cycles/sqrt(s)]
   double innovation_gate = 5.0;   // reject DD rows whose innovation exceeds this many sigma
@@ -31,7 +27,6 @@ struct RtkOptions {
   bool fix_and_hold = false;
   double hold_sigma_cycles = 1e-3;
   double max_base_offset = 0.5;  // largest rover-base time-tag difference [s]
-  CycleSlipOptions slips;
 };
 
 struct RtkSolution {
@@ -61,16 +56,12 @@ class RtkFilter {
   const BroadcastOrbits& orbits_;
   Eigen::Vector3d base_e_;
   RtkOptions options_;
-  CycleSlipDetector rover_slips_, base_slips_;
+  DdEpochBuilder dd_builder_;
   bool initialized_ = false;
   double t_last_ = 0.0;
   Eigen::VectorXd x_;  // [p (3), v (3), N...]
   Eigen::MatrixXd P_;
   std::vector<AmbKey> amb_keys_;  // state order of the ambiguities
-  std::map<std::pair<GnssSystem, char>, SatId> refs_;
 };
-
-/// Bands used per system: primary and, with two frequencies, the second.
-std::vector<char> rtkBands(GnssSystem sys, int frequencies);
 
 }  // namespace giocal

@@ -8,20 +8,21 @@ RtkOptions readRtkOptions(const std::string& path) {
   const YamlFields y(path);
   RtkOptions o;
   const std::string s = "rtk.";
-  o.elevation_mask_deg = y.numberOr(s + "elevation_mask_deg", o.elevation_mask_deg, 0.0, 60.0);
-  o.frequencies = static_cast<int>(y.numberOr(s + "frequencies", o.frequencies, 1, 2));
+  o.dd.elevation_mask_deg =
+      y.numberOr(s + "elevation_mask_deg", o.dd.elevation_mask_deg, 0.0, 60.0);
+  o.dd.frequencies = static_cast<int>(y.numberOr(s + "frequencies", o.dd.frequencies, 1, 2));
   if (y.has(s + "systems")) {
-    o.systems.clear();
+    o.dd.systems.clear();
     const std::string sys = y.text(s + "systems");
     for (char c : sys) {
       const auto g = static_cast<GnssSystem>(c);
       if (!isSupported(g)) y.fail(s + "systems", "letters must be among G, E, C, J");
-      o.systems.push_back(g);
+      o.dd.systems.push_back(g);
     }
-    if (o.systems.empty()) y.fail(s + "systems", "needs at least one system");
+    if (o.dd.systems.empty()) y.fail(s + "systems", "needs at least one system");
   }
-  o.code.sigma_zenith = y.numberOr(s + "code_sigma", o.code.sigma_zenith, 1e-4, 100.0);
-  o.phase.sigma_zenith = y.numberOr(s + "phase_sigma", o.phase.sigma_zenith, 1e-5, 1.0);
+  o.dd.code.sigma_zenith = y.numberOr(s + "code_sigma", o.dd.code.sigma_zenith, 1e-4, 100.0);
+  o.dd.phase.sigma_zenith = y.numberOr(s + "phase_sigma", o.dd.phase.sigma_zenith, 1e-5, 1.0);
   o.accel_noise = y.numberOr(s + "accel_noise", o.accel_noise, 0.0, 1000.0);
   o.ambiguity_noise = y.numberOr(s + "ambiguity_noise", o.ambiguity_noise, 0.0, 10.0);
   o.innovation_gate = y.numberOr(s + "innovation_gate", o.innovation_gate, 1.0, 1e6);

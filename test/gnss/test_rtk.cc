@@ -63,7 +63,7 @@ TEST(Rtk, MosaicMultiGnssFixesAndHitsTheKnownPosition) {
 
 TEST(Rtk, MosaicGpsOnly) {
   RtkJob job = mosaicJob();
-  job.options.systems = {GnssSystem::kGps};
+  job.options.dd.systems = {GnssSystem::kGps};
   const Result r = run(job, kMosaicRover);
   std::cout << "mosaic GPS-only RTK: " << r.summary.fixed << "/" << r.summary.epochs
             << " fixed, mean fixed ENU error " << r.mean_enu.transpose() * 1000 << " mm\n";

@@ -25,11 +25,11 @@ TEST(ModelOptions, ShippedConfigEqualsTheDefaults) {
 TEST(RtkOptions, ShippedConfigEqualsTheDefaults) {
   const RtkOptions shipped = readRtkOptions(std::string(GIOCAL_SOURCE_DIR) + "/config/giocal.yaml");
   const RtkOptions d;
-  EXPECT_DOUBLE_EQ(shipped.elevation_mask_deg, d.elevation_mask_deg);
-  EXPECT_EQ(shipped.frequencies, d.frequencies);
-  EXPECT_EQ(shipped.systems, d.systems);
-  EXPECT_DOUBLE_EQ(shipped.code.sigma_zenith, d.code.sigma_zenith);
-  EXPECT_DOUBLE_EQ(shipped.phase.sigma_zenith, d.phase.sigma_zenith);
+  EXPECT_DOUBLE_EQ(shipped.dd.elevation_mask_deg, d.dd.elevation_mask_deg);
+  EXPECT_EQ(shipped.dd.frequencies, d.dd.frequencies);
+  EXPECT_EQ(shipped.dd.systems, d.dd.systems);
+  EXPECT_DOUBLE_EQ(shipped.dd.code.sigma_zenith, d.dd.code.sigma_zenith);
+  EXPECT_DOUBLE_EQ(shipped.dd.phase.sigma_zenith, d.dd.phase.sigma_zenith);
   EXPECT_DOUBLE_EQ(shipped.accel_noise, d.accel_noise);
   EXPECT_DOUBLE_EQ(shipped.ambiguity_noise, d.ambiguity_noise);
   EXPECT_DOUBLE_EQ(shipped.innovation_gate, d.innovation_gate);
@@ -39,7 +39,7 @@ TEST(RtkOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_DOUBLE_EQ(shipped.hold_sigma_cycles, d.hold_sigma_cycles);
   EXPECT_DOUBLE_EQ(shipped.max_base_offset, d.max_base_offset);
   test::TempDir dir;
-  EXPECT_EQ(readRtkOptions(dir.write("g.yaml", "rtk:\n  systems: G\n")).systems,
+  EXPECT_EQ(readRtkOptions(dir.write("g.yaml", "rtk:\n  systems: G\n")).dd.systems,
             std::vector<GnssSystem>{GnssSystem::kGps});
   EXPECT_THROW(readRtkOptions(dir.write("r.yaml", "rtk:\n  systems: GR\n")), DataError);
 }
