@@ -19,8 +19,6 @@ bool combinations(GnssSystem sys, const SignalObs* a, const SignalObs* b, double
   return true;
 }
 
-char primaryBandOf(GnssSystem sys) { return sys == GnssSystem::kBeidou ? '2' : '1'; }
-
 }  // namespace
 
 void CycleSlipDetector::update(const ObsEpoch& epoch) {
@@ -30,7 +28,7 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
   std::vector<std::pair<std::pair<SatId, char>, double>> doppler_misfit;
   std::map<std::pair<SatId, char>, Track> next;
   for (const SatObs& so : epoch.sats) {
-    const SignalObs* prim = so.bestOnBand(primaryBandOf(so.sat.sys));
+    const SignalObs* prim = so.bestOnBand(primaryBand(so.sat.sys));
     std::vector<char> bands;
     for (const SignalObs& s : so.signals) {
       if (!std::isnan(s.L) && std::find(bands.begin(), bands.end(), s.band) == bands.end()) {

@@ -6,7 +6,6 @@
 #include <numeric>
 #include <set>
 
-#include "common/gnss/atmosphere.h"
 #include "common/gnss/double_difference.h"
 
 namespace giocal {

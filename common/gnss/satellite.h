@@ -38,6 +38,10 @@ constexpr double kSpeedOfLight = 299792458.0;
 /// Carrier frequency [Hz] of a RINEX 3 band digit for a system (GLONASS FDMA unsupported: 0).
 double carrierFrequency(GnssSystem sys, char band);
 
+/// The primary single-frequency band (SPP, Doppler, the transmission time, the slip pairs):
+/// L1/E1 for GPS, QZSS and Galileo, B1I for BeiDou.
+inline char primaryBand(GnssSystem sys) { return sys == GnssSystem::kBeidou ? '2' : '1'; }
+
 /// BeiDou GEO satellites (their orbits use a different frame rotation).
 bool isBeidouGeo(const SatId& sat);
 

@@ -54,8 +54,6 @@ double chi2Quantile(double probability, int dof) {
   return k * t * t * t;
 }
 
-char primaryBand(GnssSystem sys) { return sys == GnssSystem::kBeidou ? '2' : '1'; }
-
 SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
                      const SppOptions& options) {
   SppSolution sol;

@@ -35,10 +35,6 @@ struct SppSolution {
   std::vector<SatId> doppler_rejected;
 };
 
-/// The primary single-frequency band SPP and Doppler use: L1/E1 for GPS/QZSS/Galileo, B1I for
-/// BeiDou.
-char primaryBand(GnssSystem sys);
-
 SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
                      const SppOptions& options);
 
