@@ -10,18 +10,14 @@ namespace giocal {
 
 std::vector<char> ddBands(GnssSystem sys, int frequencies) {
   std::vector<char> b;
-  switch (sys) {
-    case GnssSystem::kBeidou:
-      b = {'2', '7'};
-      break;
-    case GnssSystem::kGalileo:
-      b = {'1', '7'};
-      break;
-    default:
-      b = {'1', '2'};
-      break;
+  if (sys == GnssSystem::kBeidou) {
+    b = {'2', '7', '6'};  // B1I, B2I, B3I
+  } else if (sys == GnssSystem::kGalileo) {
+    b = {'1', '7', '5'};  // E1, E5b, E5a
+  } else {
+    b = {'1', '2', '5'};  // L1, L2, L5
   }
-  b.resize(static_cast<size_t>(std::clamp(frequencies, 1, 2)));
+  b.resize(static_cast<size_t>(std::clamp(frequencies, 1, 3)));
   return b;
 }
 

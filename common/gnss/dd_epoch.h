@@ -18,7 +18,7 @@ namespace giocal {
 
 struct DdOptions {
   double elevation_mask_deg = 15.0;
-  int frequencies = 2;
+  int frequencies = 2;  // 1, 2 or 3 (see ddBands)
   std::vector<GnssSystem> systems{GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou,
                                   GnssSystem::kQzss};
   ElevationNoise code{0.3};
@@ -44,7 +44,8 @@ struct DdEpoch {
   std::vector<SdAmbiguity> ambiguities;
 };
 
-/// Bands used per system: primary and, with two frequencies, the second.
+/// Bands used per system, in order: 1 frequency L1/E1/B1I; 2 adds L2/E5b/B2I; 3 adds L5/E5a/B3I
+/// (each where the satellite and both receivers track it).
 std::vector<char> ddBands(GnssSystem sys, int frequencies);
 
 class DdEpochBuilder {

@@ -10,7 +10,7 @@ RtkOptions readRtkOptions(const std::string& path) {
   const std::string s = "rtk.";
   o.dd.elevation_mask_deg =
       y.numberOr(s + "elevation_mask_deg", o.dd.elevation_mask_deg, 0.0, 60.0);
-  o.dd.frequencies = static_cast<int>(y.numberOr(s + "frequencies", o.dd.frequencies, 1, 2));
+  o.dd.frequencies = static_cast<int>(y.numberOr(s + "frequencies", o.dd.frequencies, 1, 3));
   if (y.has(s + "systems")) {
     o.dd.systems.clear();
     const std::string sys = y.text(s + "systems");

@@ -3,6 +3,9 @@
 #include <fstream>
 
 #include "common/geodesy/wgs84.h"
+#include "common/gnss/dd_epoch.h"
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs.h"
 #include "common/gnss/rtk_job.h"
 #include "common/math/rotation.h"
 #include "temp_dir.h"
@@ -66,6 +69,36 @@ TEST(Rtk, MosaicGpsOnly) {
   job.options.dd.systems = {GnssSystem::kGps};
   const Result r = run(job, kMosaicRover);
   std::cout << "mosaic GPS-only RTK: " << r.summary.fixed << "/" << r.summary.epochs
+            << " fixed, mean fixed ENU error " << r.mean_enu.transpose() * 1000 << " mm\n";
+  EXPECT_GE(r.summary.fixed, 298);
+  EXPECT_LT(r.mean_enu.head<2>().norm(), 0.01);
+  EXPECT_LT(std::abs(r.mean_enu.z()), 0.02);
+}
+
+TEST(Rtk, MosaicThreeFrequencies) {
+  // L1/L2/L5, E1/E5b/E5a, B1I/B2I/B3I where tracked: the third bands do form DD rows...
+  RtkJob job = mosaicJob();
+  {
+    const BroadcastOrbits orbits(readRinexNav(job.nav.front()));
+    const ObsData r = readRinexObs(job.rover), b = readRinexObs(job.base);
+    DdOptions o;
+    o.frequencies = 3;
+    DdEpochBuilder builder(orbits, *job.base_pos, o);
+    const DdEpoch ep = builder.build(r.epochs[10], b.epochs[10], ecefFromGeodetic(kMosaicRover));
+    int l5 = 0, e5a = 0, b3 = 0;
+    for (const auto& d : ep.obs) {
+      l5 += d.sat.sys == GnssSystem::kGps && d.band == '5';
+      e5a += d.sat.sys == GnssSystem::kGalileo && d.band == '5';
+      b3 += d.sat.sys == GnssSystem::kBeidou && d.band == '6';
+    }
+    EXPECT_GT(l5, 0);
+    EXPECT_GT(e5a, 0);
+    EXPECT_GT(b3, 0);
+  }
+  // ...and the solution still fixes at the millimetre level.
+  job.options.dd.frequencies = 3;
+  const Result r = run(job, kMosaicRover);
+  std::cout << "mosaic 3-frequency RTK: " << r.summary.fixed << "/" << r.summary.epochs
             << " fixed, mean fixed ENU error " << r.mean_enu.transpose() * 1000 << " mm\n";
   EXPECT_GE(r.summary.fixed, 298);
   EXPECT_LT(r.mean_enu.head<2>().norm(), 0.01);
