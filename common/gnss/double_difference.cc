@@ -11,6 +11,14 @@ double ddRange(const Eigen::Vector3d& rover_e, const SdGeometry& sat, const SdGe
   return (ri - sat.base_range) - (rr - ref.base_range);
 }
 
+double ddPredict(const DdObservation& o, const std::vector<SdGeometry>& geometry,
+                 const Eigen::Vector3d& rover_e, double n_sat, double n_ref,
+                 Eigen::RowVector3d* d_rover) {
+  const double range = ddRange(rover_e, geometry[static_cast<size_t>(o.sat_index)],
+                               geometry[static_cast<size_t>(o.ref_index)], d_rover);
+  return o.phase ? range + o.lambda * (n_sat - n_ref) : range;
+}
+
 int chooseReference(const std::vector<SdGeometry>& geometry, const std::vector<int>& candidates,
                     int previous, double keep_elevation) {
   int best = -1;

@@ -35,6 +35,12 @@ struct DdObservation {
   int ref_index = -1;
 };
 
+/// Predicted value of a DD observation [m]: the DD range, plus lambda (N_sat - N_ref) for phase
+/// (SD ambiguities in cycles; ignored for code). d_rover: gradient for the rover antenna (ECEF).
+double ddPredict(const DdObservation& o, const std::vector<SdGeometry>& geometry,
+                 const Eigen::Vector3d& rover_e, double n_sat, double n_ref,
+                 Eigen::RowVector3d* d_rover);
+
 /// Reference satellite per group: the highest elevation, unless `previous` is still present and
 /// above `keep_elevation` (keeping the reference avoids re-forming every DD ambiguity).
 int chooseReference(const std::vector<SdGeometry>& geometry, const std::vector<int>& candidates,

@@ -134,12 +134,12 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
     for (long a = 0; a < m; ++a) {
       const DdObservation& o = used_obs[static_cast<size_t>(a)];
       Eigen::RowVector3d J;
-      double pred = ddRange(x_.head<3>(), geometry[static_cast<size_t>(o.sat_index)],
-                            geometry[static_cast<size_t>(o.ref_index)], &J);
+      const int ia = o.phase ? ambiguityIndex({o.sat, o.band}) : -1;
+      const int ir = o.phase ? ambiguityIndex({o.ref, o.band}) : -1;
+      const double pred =
+          ddPredict(o, geometry, x_.head<3>(), o.phase ? x_[ia] : 0.0, o.phase ? x_[ir] : 0.0, &J);
       H.block(a, 0, 1, 3) = J;
       if (o.phase) {
-        const int ia = ambiguityIndex({o.sat, o.band}), ir = ambiguityIndex({o.ref, o.band});
-        pred += o.lambda * (x_[ia] - x_[ir]);
         H(a, ia) = o.lambda;
         H(a, ir) = -o.lambda;
       }

@@ -46,15 +46,11 @@ void DdGnssModel::evaluate(const double* const* params, Eigen::VectorXd& residua
   for (long a = 0; a < m; ++a) {
     const DdObservation& o = obs_[static_cast<size_t>(a)];
     Eigen::RowVector3d G;
-    double pred = ddRange(antenna_e, geometry_[static_cast<size_t>(o.sat_index)],
-                          geometry_[static_cast<size_t>(o.ref_index)], &G);
-    int bi = -1, br = -1;
-    if (o.phase) {
-      bi = ambiguityBlock(o.sat, o.band);
-      br = ambiguityBlock(o.ref, o.band);
-      pred += o.lambda * (params[bi][0] - params[br][0]);
-    }
-    residual[a] = pred - o.value;
+    const int bi = o.phase ? ambiguityBlock(o.sat, o.band) : -1;
+    const int br = o.phase ? ambiguityBlock(o.ref, o.band) : -1;
+    residual[a] = ddPredict(o, geometry_, antenna_e, o.phase ? params[bi][0] : 0.0,
+                            o.phase ? params[br][0] : 0.0, &G) -
+                  o.value;
     if (!jacobians) continue;
     const Eigen::RowVector3d G_n = G * R_e_n;
     (*jacobians)[0].row(a) = G_n;
