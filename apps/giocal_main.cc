@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "apps/calibrate_command.h"
 #include "apps/check_command.h"
 #include "apps/simulate_command.h"
 #include "common/gnss/rtk_config.h"
@@ -23,12 +24,12 @@ const char* kUsage =
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
-    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir>\n"
+    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir> "
+    "[--overwrite]\n"
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";
 
 // Sub-commands of the command-line contract that are not implemented yet, and their issue.
-const std::map<std::string, std::string> kNotYet{{"calibrate", "issues 5 and 6, the estimators"},
-                                                 {"compare", "issue 6, the factor graph"}};
+const std::map<std::string, std::string> kNotYet{{"compare", "issue 6, the factor graph"}};
 
 int runCheckCommand(int argc, char** argv) {
   po::options_description opts("giocal check");
@@ -85,6 +86,26 @@ int runRtkCommand(int argc, char** argv) {
   return 0;
 }
 
+int runCalibrateCommand(int argc, char** argv) {
+  po::options_description opts("giocal calibrate");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
+      "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
+      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
+      "out", po::value<std::string>()->required(), "output folder")(
+      "overwrite", "replace existing outputs in --out");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, opts), vm);
+  po::notify(vm);
+  giocal::CalibrateJob job;
+  job.data = vm["data"].as<std::string>();
+  job.estimator = vm["estimator"].as<std::string>();
+  job.config = vm["config"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") != 0;
+  giocal::runCalibrate(job, std::cout);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -97,6 +118,7 @@ int main(int argc, char** argv) {
     if (command == "check") return runCheckCommand(argc - 1, argv + 1);
     if (command == "simulate") return runSimulateCommand(argc - 1, argv + 1);
     if (command == "rtk") return runRtkCommand(argc - 1, argv + 1);
+    if (command == "calibrate") return runCalibrateCommand(argc - 1, argv + 1);
     if (kNotYet.count(command)) {
       std::cerr << "giocal " << command << ": not implemented yet (" << kNotYet.at(command)
                 << ")\n";

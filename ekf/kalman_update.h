@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "ekf/measurement_rows.h"
 
@@ -14,7 +15,13 @@ struct UpdateResult {
 };
 
 /// Updates P in place and returns the correction; rejects (P unchanged) when the NIS exceeds
-/// `chi2_gate` (pass infinity to disable the gate).
-UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate);
+/// `chi2_gate` (pass infinity to disable the gate). Error-state indices in `held` are consider
+/// states (Schmidt): their gain rows are zero, so neither they nor their variance change, while
+/// their uncertainty still enters the update of the others.
+UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
+                          const std::vector<int>& held = {});
+
+/// |innovation| / sqrt(S_ii) of every row, S = H P H^T + R: the per-row outlier test.
+Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows);
 
 }  // namespace giocal

@@ -39,6 +39,17 @@ void StateRegistry::remove(const std::string& name) {
   }
 }
 
+void StateRegistry::clone(const std::string& name, const std::string& copy) {
+  StateBlock b = block(name);
+  const int src = offset(name), m = b.tangentSize();
+  b.name = copy;
+  add(b, value(name), marginal(name));
+  const int dst = offset(copy);
+  P_.block(dst, 0, m, dim()) = P_.block(src, 0, m, dim());
+  P_.block(0, dst, dim(), m) = P_.block(0, src, dim(), m);
+  P_.block(dst, dst, m, m) = P_.block(src, src, m, m);
+}
+
 int StateRegistry::offset(const std::string& name) const {
   const auto it = vars_.find(name);
   if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");

@@ -21,6 +21,8 @@ class StateRegistry {
            const Eigen::MatrixXd& covariance);
   /// Removes a variable and its rows and columns (marginalization of a Gaussian).
   void remove(const std::string& name);
+  /// Adds `copy` as a stochastic clone of `name`: same value, fully correlated with it.
+  void clone(const std::string& name, const std::string& copy);
 
   bool has(const std::string& name) const { return vars_.count(name) != 0; }
   int offset(const std::string& name) const;

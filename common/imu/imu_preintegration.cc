@@ -1,5 +1,7 @@
 #include "common/imu/imu_preintegration.h"
 
+#include <algorithm>
+
 #include <stdexcept>
 
 namespace giocal {
@@ -120,7 +122,11 @@ void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, 
   if (samples.size() < 2 || samples.front().t > t0 || samples.back().t < t1) {
     throw std::invalid_argument("ImuPreintegration: samples do not cover the interval");
   }
-  for (size_t k = 0; k + 1 < samples.size(); ++k) {
+  // Start at the last sample at or before t0 (binary search: callers pass whole logs).
+  const auto first = std::upper_bound(samples.begin(), samples.end(), t0,
+                                      [](double t, const ImuSample& s) { return t < s.t; });
+  for (size_t k = static_cast<size_t>(first - samples.begin()) - 1;
+       k + 1 < samples.size() && samples[k].t < t1; ++k) {
     const double a = std::max(samples[k].t, t0), b = std::min(samples[k + 1].t, t1);
     if (b <= a) continue;
     const ImuSample sa = interp(k, a), sb = interp(k, b);

@@ -1,12 +1,16 @@
 #include "common/motion/motion_detector.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace giocal {
 
-void MotionDetector::Window::add(double t, double value, double length) {
+template <typename T>
+void MotionDetector::Window<T>::add(double t, const T& value, double length) {
   // A sample older than the last one restarts the window rather than corrupting the mean.
   if (!samples.empty() && t <= samples.back().first) {
     samples.clear();
-    sum = 0.0;
+    sum = sum - sum;
   }
   samples.emplace_back(t, value);
   sum += value;
@@ -16,29 +20,37 @@ void MotionDetector::Window::add(double t, double value, double length) {
   }
 }
 
-bool MotionDetector::Window::full(double length) const {
+template <typename T>
+bool MotionDetector::Window<T>::full(double length) const {
   // Covered when the samples span at least 90 % of the window (sampling jitter and the edges).
   return samples.size() >= 2 && samples.back().first - samples.front().first >= 0.9 * length;
 }
 
 void MotionDetector::addImu(double t, const Eigen::Vector3d& gyro) {
-  gyro_.add(t, gyro.norm(), options_.window_s);
+  gyro_.add(t, gyro, options_.window_s);
 }
 
 void MotionDetector::addOdometer(double t, double forward_speed) {
   speed_.add(t, forward_speed, options_.window_s);
 }
 
-double MotionDetector::meanGyroNorm() const { return gyro_.mean(); }
+double MotionDetector::meanGyroNorm() const { return gyro_.mean().norm(); }
 double MotionDetector::meanSpeed() const { return speed_.mean(); }
 
+double MotionDetector::staticGyroThreshold() const {
+  return std::max(options_.zupt_max_gyro,
+                  4.0 * options_.gyro_noise_density / std::sqrt(options_.window_s));
+}
+
 bool MotionDetector::isStatic() const {
-  return gyro_.full(options_.window_s) && gyro_.mean() < options_.zupt_max_gyro;
+  const bool wheels_still =
+      speed_.samples.empty() || std::abs(speed_.mean()) < options_.zupt_max_speed;
+  return gyro_.full(options_.window_s) && meanGyroNorm() < staticGyroThreshold() && wheels_still;
 }
 
 bool MotionDetector::nhcApplies() const {
   return gyro_.full(options_.window_s) && speed_.full(options_.window_s) &&
-         gyro_.mean() < options_.nhc_max_gyro && speed_.mean() > options_.nhc_min_speed;
+         meanGyroNorm() < options_.nhc_max_gyro && speed_.mean() > options_.nhc_min_speed;
 }
 
 }  // namespace giocal

@@ -10,9 +10,13 @@ namespace giocal {
 /// Thresholds of the reference paper, configurable.
 struct MotionDetectorOptions {
   double window_s = 1.0;                               // averaging window [s]
-  double zupt_max_gyro = 0.05 * 0.017453292519943295;  // mean |w| below this is static [rad/s]
-  double nhc_max_gyro = 5.0 * 0.017453292519943295;    // mean |w| below this is not turning [rad/s]
+  double zupt_max_gyro = 0.05 * 0.017453292519943295;  // |mean w| below this is static [rad/s]
+  double zupt_max_speed = 0.01;  // |mean odometer speed| below this is static, if any [m/s]
+  double nhc_max_gyro = 5.0 * 0.017453292519943295;    // |mean w| below this: not turning [rad/s]
   double nhc_min_speed = 1.0;  // mean forward speed above this for NHC [m/s]
+  /// The gyro's white noise [rad/s/sqrt(Hz)]: a mean over the window cannot be told from zero
+  /// below 4 density / sqrt(window), so the static threshold is at least that (0: paper's alone).
+  double gyro_noise_density = 0.0;
 };
 
 class MotionDetector {
@@ -23,26 +27,29 @@ class MotionDetector {
   void addImu(double t, const Eigen::Vector3d& gyro);
   void addOdometer(double t, double forward_speed);
 
-  /// Mean |gyro| below zupt_max_gyro over a full window ending at the latest sample.
+  /// |mean gyro| below the static threshold over a full window ending at the latest sample, and
+  /// the wheels still (|mean speed| below zupt_max_speed) when odometer samples are present.
   bool isStatic() const;
-  /// Mean |gyro| below nhc_max_gyro and mean odometer speed above nhc_min_speed over full windows.
+  /// |mean gyro| below nhc_max_gyro and mean odometer speed above nhc_min_speed over full windows.
   bool nhcApplies() const;
+  /// The static threshold in use [rad/s].
+  double staticGyroThreshold() const;
 
-  double meanGyroNorm() const;
+  double meanGyroNorm() const;  // |mean gyro| over the window [rad/s]
   double meanSpeed() const;
 
  private:
+  template <typename T>
   struct Window {
-    std::deque<std::pair<double, double>> samples;  // (t, value)
-    double sum = 0.0;
-    void add(double t, double value, double length);
+    std::deque<std::pair<double, T>> samples;  // (t, value)
+    T sum{};
+    void add(double t, const T& value, double length);
     bool full(double length) const;
-    double mean() const {
-      return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
-    }
+    T mean() const { return samples.empty() ? T{} : T(sum / static_cast<double>(samples.size())); }
   };
   MotionDetectorOptions options_;
-  Window gyro_, speed_;
+  Window<Eigen::Vector3d> gyro_{{}, Eigen::Vector3d::Zero()};
+  Window<double> speed_{{}, 0.0};
 };
 
 }  // namespace giocal

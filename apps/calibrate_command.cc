@@ -1,0 +1,84 @@
+#include "apps/calibrate_command.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <ostream>
+#include <stdexcept>
+
+#include "common/calibration/calibration_inputs.h"
+#include "common/calibration/calibration_options.h"
+#include "common/math/rotation.h"
+#include "ekf/ekf_calibrator.h"
+
+namespace giocal {
+
+void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibration* truth,
+                             std::ostream& out) {
+  if (run.history.empty()) {
+    out << run.estimator << ": no calibration estimate\n";
+    return;
+  }
+  const CalibrationEstimate& e = run.history.back();
+  const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
+  const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
+  const auto sd = [&](int i) { return std::sqrt(std::max(0.0, e.cov(i, i))); };
+  CalibrationError err;
+  if (truth) err = calibrationError(e, *truth);
+  out << std::fixed;
+  const auto row = [&](const char* name, double v, double s, double er, int prec) {
+    out << "  " << std::left << std::setw(10) << name << std::right << std::setprecision(prec)
+        << std::setw(12) << v << " +- " << std::setw(prec + 4) << s;
+    if (truth) out << "   error " << std::setw(prec + 5) << er;
+    out << "\n";
+  };
+  out << run.estimator << " calibration at t=" << std::setprecision(2) << e.t << ":\n";
+  row("s_v", e.calib.s_v, sd(calib_index::kSv), err.s_v, 5);
+  row("s_w", e.calib.s_w, sd(calib_index::kSw), err.s_w, 5);
+  const char* pn[3] = {"p_b_m.x m", "p_b_m.y m", "p_b_m.z m"};
+  for (int k = 0; k < 3; ++k)
+    row(pn[k], e.calib.p_b_m[k], sd(calib_index::kP + k), err.p_b_m[k], 4);
+  const char* rn[3] = {"roll deg", "pitch deg", "yaw deg"};
+  for (int k = 0; k < 3; ++k) row(rn[k], rpy[k], sd_rpy[k], err.rpy[k] * kRadToDeg, 3);
+  if (truth) out << "  NEES (7 observable states) " << std::setprecision(2) << err.nees7 << "\n";
+  out << "  p_b_m.z: " << run.p_b_m_z << "\n";
+  out << std::setprecision(1) << "  GNSS epochs " << run.gnss_epochs << ", fix rate "
+      << 100.0 * run.fixRate() << " %; " << std::setprecision(3) << run.wall_time_s << " s for "
+      << std::setprecision(1) << run.data_duration_s << " s of data ("
+      << std::setprecision(0)
+      << (run.wall_time_s > 0 ? run.data_duration_s / run.wall_time_s : 0.0)
+      << "x real time), files read in " << std::setprecision(3) << run.load_time_s << " s\n";
+  for (const std::string& w : run.warnings) out << "  warning: " << w << "\n";
+  out.unsetf(std::ios::fixed);
+}
+
+CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
+  if (job.estimator != "ekf" && job.estimator != "fgo") {
+    throw std::invalid_argument("--estimator must be ekf or fgo, not '" + job.estimator + "'");
+  }
+  if (!job.overwrite) {
+    for (const std::string& f : calibrationOutputFiles()) {
+      if (std::filesystem::exists(job.out + "/" + f)) {
+        throw std::runtime_error(job.out + "/" + f +
+                                 " exists; give --overwrite to replace the outputs");
+      }
+    }
+  }
+  const CalibrationOptions options = readCalibrationOptions(job.config);
+  const auto t0 = std::chrono::steady_clock::now();
+  const CalibrationInputs inputs = loadCalibrationInputs(job.data);
+  const double load_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (job.estimator == "fgo") {
+    throw std::runtime_error("--estimator fgo is not implemented yet (issue 6)");
+  }
+  CalibrationRun run = runEkfCalibration(inputs, options);
+  run.load_time_s = load_s;
+  const OdometerCalibration* truth = inputs.truth ? &inputs.truth->calib : nullptr;
+  writeCalibrationRun(job.out, run, truth);
+  printCalibrationSummary(run, truth, log);
+  log << "  outputs: " << job.out << "/{calibration.csv, trajectory.csv, summary.json}\n";
+  return run;
+}
+
+}  // namespace giocal

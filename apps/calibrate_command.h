@@ -1,0 +1,24 @@
+// `giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir>`.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+#include "common/calibration/calibration_run.h"
+
+namespace giocal {
+
+struct CalibrateJob {
+  std::string data, estimator = "ekf", config, out;
+  bool overwrite = false;
+};
+
+/// Runs one estimator on a dataset folder, writes the outputs, prints a summary. Refuses to
+/// replace existing outputs unless job.overwrite.
+CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log);
+
+/// Final calibration with 1-sigma (and errors when the truth is known), fix rate and speed.
+void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibration* truth,
+                             std::ostream& out);
+
+}  // namespace giocal

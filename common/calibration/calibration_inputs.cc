@@ -1,0 +1,53 @@
+#include "common/calibration/calibration_inputs.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "common/gnss/rinex_obs.h"
+#include "common/io/data_error.h"
+#include "common/io/sensor_logs.h"
+
+namespace giocal {
+
+double CalibrationInputs::dataDuration() const {
+  if (imu.empty() || rover.epochs.empty()) return 0.0;
+  const double t0 = std::max(imu.front().t, rover.epochs.front().t);
+  const double t1 = std::min(imu.back().t, rover.epochs.back().t);
+  return std::max(0.0, t1 - t0);
+}
+
+CalibrationInputs loadCalibrationInputs(const std::string& folder) {
+  CalibrationInputs in;
+  in.description = readDatasetDescription(folder);
+  const DatasetDescription& d = in.description;
+  auto need = [&](const std::string& name) {
+    const std::string p = d.pathOf(name);
+    if (!std::filesystem::exists(p)) throw DataError(p, 0, "file missing");
+    return p;
+  };
+  in.imu = readImuCsv(need(d.imu));
+  in.odom = readOdomCsv(need(d.odom));
+  if (in.imu.size() < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
+  if (in.odom.empty()) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
+  in.rover = readRinexObs(need(d.rover_obs));
+  in.base = readRinexObs(need(d.base_obs));
+  if (in.rover.epochs.empty()) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
+  if (in.base.epochs.empty()) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
+  std::vector<NavData> navs;
+  for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
+  in.nav = mergeNav(navs);
+  in.base_e = d.base_position_ecef ? *d.base_position_ecef : in.base.header.approx_position;
+  if (in.base_e.norm() < 6.0e6) {
+    throw DataError(d.pathOf(d.base_obs), 0,
+                    "no APPROX POSITION XYZ in the header; give gnss.base_position_ecef in "
+                    "dataset.yaml");
+  }
+  if (in.dataDuration() <= 0.0) {
+    throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
+  }
+  const std::string truth = folder + "/truth_calib.yaml";
+  if (std::filesystem::exists(truth)) in.truth = readTruthCalibration(truth);
+  return in;
+}
+
+}  // namespace giocal

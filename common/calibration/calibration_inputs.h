@@ -1,0 +1,36 @@
+// CalibrationInputs: everything a calibrator reads from a dataset folder, loaded and checked once:
+// dataset.yaml, the IMU and odometer logs, rover and base observations, broadcast orbits, the base
+// position, and truth_calib.yaml when present.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/gnss/observation.h"
+#include "common/gnss/rinex_nav.h"
+#include "common/imu/imu_sample.h"
+#include "common/io/dataset_description.h"
+#include "common/odometer/odom_sample.h"
+
+namespace giocal {
+
+struct CalibrationInputs {
+  DatasetDescription description;
+  std::vector<ImuSample> imu;
+  std::vector<OdomSample> odom;
+  ObsData rover, base;
+  NavData nav;
+  Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
+  std::optional<TruthCalibration> truth;  // from truth_calib.yaml, if the folder has one
+
+  /// Time span covered by both the IMU and the rover observations [s].
+  double dataDuration() const;
+};
+
+/// Throws DataError naming the file, the line and the problem (missing file, bad rows, too few
+/// samples, no base position, logs that do not overlap in time).
+CalibrationInputs loadCalibrationInputs(const std::string& folder);
+
+}  // namespace giocal

@@ -1,0 +1,56 @@
+#include "common/calibration/calibration_options.h"
+
+#include "common/gnss/rtk_config.h"
+#include "common/io/yaml_fields.h"
+#include "common/math/rotation.h"
+
+namespace giocal {
+
+CalibrationOptions readCalibrationOptions(const std::string& path) {
+  CalibrationOptions o;
+  if (path.empty()) return o;
+  o.models = readModelOptions(path);
+  const RtkOptions rtk = readRtkOptions(path);
+  o.dd = rtk.dd;
+  o.lambda = rtk.lambda;
+  o.ambiguity_noise = rtk.ambiguity_noise;
+  o.max_base_offset = rtk.max_base_offset;
+  o.doppler.elevation_mask_deg = o.dd.elevation_mask_deg;
+  o.doppler.systems = o.dd.systems;
+
+  const YamlFields y(path);
+  const std::string s = "calibration.";
+  auto flag = [&](const std::string& key, bool fallback) {
+    return y.numberOr(s + key, fallback ? 1 : 0, 0, 1) != 0.0;
+  };
+  o.ambiguity_resolution = flag("ambiguity_resolution", o.ambiguity_resolution);
+  o.fix_sigma_cycles = y.numberOr(s + "fix_sigma_cycles", o.fix_sigma_cycles, 1e-6, 1.0);
+  o.max_fix_residual = y.numberOr(s + "max_fix_residual", o.max_fix_residual, 1.0, 100.0);
+  o.innovation_gate = y.numberOr(s + "innovation_gate", o.innovation_gate, 1.0, 1e6);
+  o.chi2_probability = y.numberOr(s + "chi2_probability", o.chi2_probability, 0.5, 1.0);
+  o.heading_sigma_deg = y.numberOr(s + "heading_sigma_deg", o.heading_sigma_deg, 1e-4, 10.0);
+  o.doppler.noise.sigma_zenith =
+      y.numberOr(s + "doppler_sigma", o.doppler.noise.sigma_zenith, 1e-4, 100.0);
+  o.code_outliers.threshold_m =
+      y.numberOr(s + "code_outlier_threshold", o.code_outliers.threshold_m, 0.1, 1e4);
+  o.estimate_p_b_g = flag("estimate_p_b_g", o.estimate_p_b_g);
+  o.p_b_g_sigma = y.numberOr(s + "p_b_g_sigma", o.p_b_g_sigma, 1e-6, 10.0);
+  o.hold_p_b_m_z = flag("hold_p_b_m_z", o.hold_p_b_m_z);
+  o.clock_drift_noise = y.numberOr(s + "clock_drift_noise", o.clock_drift_noise, 0.0, 1e3);
+  o.output_rate_hz = y.numberOr(s + "output_rate_hz", o.output_rate_hz, 0.01, 1e4);
+  o.max_imu_gap_s = y.numberOr(s + "max_imu_gap_s", o.max_imu_gap_s, 1e-3, 1e3);
+  o.divergence_sigma = y.numberOr(s + "divergence_sigma", o.divergence_sigma, 5.0, 1e6);
+  const std::string i = s + "init.";
+  o.init.static_speed = y.numberOr(i + "static_speed", o.init.static_speed, 0.0, 1.0);
+  o.init.min_static_s = y.numberOr(i + "min_static_s", o.init.min_static_s, 0.1, 1e3);
+  o.init.min_distance = y.numberOr(i + "min_distance", o.init.min_distance, 0.05, 1e3);
+  o.init.max_heading_sigma_deg =
+      y.numberOr(i + "max_heading_sigma_deg", o.init.max_heading_sigma_deg, 0.01, 90.0);
+  o.init.max_turn_deg = y.numberOr(i + "max_turn_deg", o.init.max_turn_deg, 0.0, 180.0);
+  o.init.velocity_sigma = y.numberOr(i + "velocity_sigma", o.init.velocity_sigma, 1e-4, 10.0);
+  o.init.attitude_sigma_deg =
+      y.numberOr(i + "attitude_sigma_deg", o.init.attitude_sigma_deg, 1e-3, 90.0);
+  return o;
+}
+
+}  // namespace giocal

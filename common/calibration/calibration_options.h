@@ -1,0 +1,57 @@
+// CalibrationOptions: the options both calibrators (EKF and factor graph) share, with their
+// defaults, loadable from the "calibration", "models" and "rtk" sections of a giocal YAML config.
+#pragma once
+
+#include <string>
+
+#include "common/gnss/code_outlier_check.h"
+#include "common/gnss/dd_epoch.h"
+#include "common/gnss/doppler.h"
+#include "common/gnss/lambda.h"
+#include "common/io/model_options.h"
+
+namespace giocal {
+
+/// How the filter finds its first state: a static window for roll, pitch and gyro bias, then the
+/// heading from the GNSS displacement of the first straight-ish drive.
+struct InitOptions {
+  double static_speed = 0.01;  // mean odometer speed over the motion window below this: still [m/s]
+  double min_static_s = 2.0;            // shortest static window used for alignment [s]
+  double min_distance = 1.0;            // antenna travel that gives the heading [m]
+  double max_heading_sigma_deg = 3.0;   // the displacement must fix the heading this well [deg]
+  double max_turn_deg = 20.0;           // yaw change allowed over that travel [deg]
+  double velocity_sigma = 0.05;         // initial velocity 1-sigma [m/s]
+  double attitude_sigma_deg = 1.0;      // roll and pitch 1-sigma without a static window [deg]
+};
+
+struct CalibrationOptions {
+  ModelOptions models;           // motion detectors, ZUPT and NHC noise
+  DdOptions dd;                  // "rtk" section: mask, frequencies, systems, code/phase noise
+  LambdaOptions lambda;          // "rtk" section: ratio test, partial AR
+  double ambiguity_noise = 1e-4; // "rtk" section: SD ambiguity random walk [cycles/sqrt(s)]
+  DopplerOptions doppler;
+  CodeOutlierOptions code_outliers;
+  InitOptions init;
+
+  bool ambiguity_resolution = true;  // false: the paper's TC-WAR scheme (float ambiguities)
+  double fix_sigma_cycles = 1e-3;    // DD ambiguity fixes enter as constraints of this sigma
+  double max_fix_residual = 4.0;     // a fix is kept only if every fixed-solution DD phase
+                                     // residual is below this many sigma
+  double innovation_gate = 5.0;      // GNSS rows with larger normalized innovation are rejected
+  double chi2_probability = 0.9999;  // NIS gate of odometer and motion-constraint updates
+  double heading_sigma_deg = 0.05;   // heading constraint while standing still [deg]
+  bool estimate_p_b_g = false;       // estimate the GNSS lever arm (else fixed at dataset.yaml)
+  double p_b_g_sigma = 0.05;         // its prior 1-sigma when estimated [m]
+  bool hold_p_b_m_z = true;          // keep p_b_m.z at its prior (unobservable in planar motion)
+  double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
+  double output_rate_hz = 10.0;      // trajectory.csv rate [Hz]
+  double max_imu_gap_s = 0.5;        // longer IMU gaps are reported (and bridged) [s]
+  double max_base_offset = 0.5;      // "rtk" section: largest rover-base time-tag gap [s]
+  double divergence_sigma = 50.0;    // DD code innovations this many sigma off: diverged
+};
+
+/// Defaults, overridden by the keys present in `path` (empty: defaults only). Throws DataError
+/// naming the file, line and problem.
+CalibrationOptions readCalibrationOptions(const std::string& path);
+
+}  // namespace giocal

@@ -1,0 +1,141 @@
+#include "common/calibration/calibration_run.h"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+
+#include "common/io/atomic_file.h"
+#include "common/io/csv_table.h"
+#include "common/math/rotation.h"
+
+namespace giocal {
+namespace {
+
+Eigen::Vector3d rpyDeg(const Eigen::Quaterniond& q) {
+  return rpyFromRotation(q.toRotationMatrix()) * kRadToDeg;
+}
+
+nlohmann::json vec(const Eigen::VectorXd& v) {
+  return nlohmann::json(std::vector<double>(v.data(), v.data() + v.size()));
+}
+
+}  // namespace
+
+// Central differences: an output conversion, not an estimator Jacobian.
+Eigen::Matrix3d rpyTangentJacobian(const Eigen::Quaterniond& q) {
+  Eigen::Matrix3d J;
+  const double h = 1e-6;
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d d = Eigen::Vector3d::Unit(k) * h;
+    const Eigen::Vector3d a = rpyFromRotation(boxPlus(q, d).toRotationMatrix());
+    const Eigen::Vector3d b = rpyFromRotation(boxPlus(q, -d).toRotationMatrix());
+    for (int r = 0; r < 3; ++r) J(r, k) = std::remainder(a[r] - b[r], 2.0 * M_PI) / (2.0 * h);
+  }
+  return J;
+}
+
+Eigen::Vector3d CalibrationEstimate::rpySigma() const {
+  const Eigen::Matrix3d J = rpyTangentJacobian(calib.q_b_m);
+  const Eigen::Matrix3d C = J * cov.block<3, 3>(calib_index::kTheta, calib_index::kTheta) *
+                            J.transpose();
+  return C.diagonal().cwiseMax(0.0).cwiseSqrt();
+}
+
+CalibrationError calibrationError(const CalibrationEstimate& e, const OdometerCalibration& truth) {
+  CalibrationError err;
+  err.s_v = e.calib.s_v - truth.s_v;
+  err.s_w = e.calib.s_w - truth.s_w;
+  err.p_b_m = e.calib.p_b_m - truth.p_b_m;
+  const Eigen::Vector3d a = rpyFromRotation(e.calib.q_b_m.toRotationMatrix());
+  const Eigen::Vector3d b = rpyFromRotation(truth.q_b_m.toRotationMatrix());
+  for (int k = 0; k < 3; ++k) err.rpy[k] = std::remainder(a[k] - b[k], 2.0 * M_PI);
+  err.tangent << err.s_v, err.s_w, err.p_b_m, boxMinus(e.calib.q_b_m, truth.q_b_m);
+  const int idx[7] = {calib_index::kSv,        calib_index::kSw,        calib_index::kP,
+                      calib_index::kP + 1,     calib_index::kTheta,     calib_index::kTheta + 1,
+                      calib_index::kTheta + 2};
+  Eigen::Matrix<double, 7, 7> C;
+  Eigen::Matrix<double, 7, 1> d;
+  for (int r = 0; r < 7; ++r) {
+    d[r] = err.tangent[idx[r]];
+    for (int c = 0; c < 7; ++c) C(r, c) = e.cov(idx[r], idx[c]);
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, 7, 7>> ldlt(C);
+  err.nees7 = ldlt.info() == Eigen::Success ? d.dot(ldlt.solve(d)) : NAN;
+  return err;
+}
+
+std::vector<std::string> calibrationOutputFiles() {
+  return {"calibration.csv", "trajectory.csv", "summary.json"};
+}
+
+void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
+                         const OdometerCalibration* truth) {
+  std::filesystem::create_directories(folder);
+  std::vector<std::vector<double>> rows;
+  for (const CalibrationEstimate& e : run.history) {
+    const Eigen::Vector3d rpy = rpyDeg(e.calib.q_b_m);
+    const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
+    const auto sd = [&](int i) { return std::sqrt(std::max(0.0, e.cov(i, i))); };
+    rows.push_back({e.t, e.calib.s_v, e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
+                    e.calib.p_b_m.z(), rpy.x(), rpy.y(), rpy.z(), sd(calib_index::kSv),
+                    sd(calib_index::kSw), sd(calib_index::kP), sd(calib_index::kP + 1),
+                    sd(calib_index::kP + 2), sd_rpy.x(), sd_rpy.y(), sd_rpy.z()});
+  }
+  writeCsvTable(folder + "/calibration.csv",
+                {"t", "s_v", "s_w", "px", "py", "pz", "roll", "pitch", "yaw", "sd_s_v", "sd_s_w",
+                 "sd_px", "sd_py", "sd_pz", "sd_roll", "sd_pitch", "sd_yaw"},
+                rows);
+  writeTruthCsv(folder + "/trajectory.csv", run.trajectory);
+
+  nlohmann::ordered_json j;
+  j["estimator"] = run.estimator;
+  if (!run.history.empty()) {
+    const CalibrationEstimate& e = run.history.back();
+    const Eigen::Quaterniond& q = e.calib.q_b_m;
+    j["final"] = {{"s_v", e.calib.s_v},
+                  {"s_w", e.calib.s_w},
+                  {"p_b_m", vec(e.calib.p_b_m)},
+                  {"q_b_m", {q.w(), q.x(), q.y(), q.z()}},
+                  {"rpy_b_m_deg", vec(rpyDeg(q))}};
+    j["sd"] = {{"s_v", std::sqrt(e.cov(0, 0))},
+               {"s_w", std::sqrt(e.cov(1, 1))},
+               {"p_b_m", vec(e.cov.diagonal().segment<3>(calib_index::kP).cwiseSqrt())},
+               {"rpy_b_m_deg", vec(e.rpySigma() * kRadToDeg)}};
+  } else {
+    j["final"] = nullptr;
+    j["sd"] = nullptr;
+  }
+  j["data_duration_s"] = run.data_duration_s;
+  j["wall_time_s"] = run.wall_time_s;
+  j["gnss_epochs"] = run.gnss_epochs;
+  j["fix_rate"] = run.fixRate();
+  j["load_time_s"] = run.load_time_s;
+  j["real_time_factor"] = run.wall_time_s > 0 ? run.data_duration_s / run.wall_time_s : 0.0;
+  j["t_initialized"] = run.t_initialized;
+  j["p_b_m_z"] = run.p_b_m_z;
+  if (!run.history.empty()) {
+    // Full tangent covariance [s_v, s_w, p_b_m, theta_b_m] for consistency checks (NEES).
+    const auto& C = run.history.back().cov;
+    std::vector<std::vector<double>> cov(8);
+    for (int r = 0; r < 8; ++r)
+      for (int c = 0; c < 8; ++c) cov[static_cast<size_t>(r)].push_back(C(r, c));
+    j["covariance_tangent"] = cov;
+  }
+  j["counters"] = run.counters;
+  j["warnings"] = run.warnings;
+  if (truth && !run.history.empty()) {
+    const CalibrationError err = calibrationError(run.history.back(), *truth);
+    j["error"] = {{"s_v", err.s_v},
+                  {"s_w", err.s_w},
+                  {"p_b_m", vec(err.p_b_m)},
+                  {"rpy_b_m_deg", vec(err.rpy * kRadToDeg)},
+                  {"nees7", err.nees7}};
+  }
+  AtomicFile f(folder + "/summary.json");
+  f.stream() << std::setprecision(12) << j.dump(2) << "\n";
+  f.commit();
+}
+
+}  // namespace giocal

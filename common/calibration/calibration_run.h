@@ -1,0 +1,71 @@
+// CalibrationRun: what a calibrator produced (the calibration over time with its covariance, the
+// trajectory, counts and warnings), its errors against a known truth, and the writer of the
+// brief's output files: calibration.csv, trajectory.csv and summary.json.
+#pragma once
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/io/dataset_description.h"
+#include "common/io/sensor_logs.h"
+#include "common/odometer/odometer_calibration.h"
+
+namespace giocal {
+
+/// Tangent order of the calibration covariance: s_v, s_w, p_b_m (3), theta_b_m (3), where the
+/// rotation error is q_b_m = q_true * Exp(theta).
+namespace calib_index {
+constexpr int kSv = 0, kSw = 1, kP = 2, kTheta = 5, kSize = 8;
+}
+
+struct CalibrationEstimate {
+  double t = 0.0;
+  OdometerCalibration calib;
+  Eigen::Matrix<double, 8, 8> cov = Eigen::Matrix<double, 8, 8>::Zero();
+
+  /// 1-sigma of roll, pitch and yaw of R_b_m [rad], mapped from the tangent covariance.
+  Eigen::Vector3d rpySigma() const;
+};
+
+struct CalibrationRun {
+  std::string estimator;  // "ekf" or "fgo"
+  std::vector<CalibrationEstimate> history;
+  std::vector<TruthSample> trajectory;
+  double data_duration_s = 0.0;
+  double wall_time_s = 0.0;  // estimator time, reading the files excluded
+  double load_time_s = 0.0;  // reading and checking the dataset files
+  double t_initialized = 0.0;  // time of the first estimated state
+  int gnss_epochs = 0;         // rover epochs used with a base epoch
+  int fixed_epochs = 0;        // of those, epochs with validated ambiguity fixes
+  std::string p_b_m_z;         // how the unobservable p_b_m.z was treated
+  std::map<std::string, long> counters;  // rejected rows, outliers, resets, ...
+  std::vector<std::string> warnings;     // bad data met on the way, divergence
+
+  double fixRate() const { return gnss_epochs ? double(fixed_epochs) / gnss_epochs : 0.0; }
+};
+
+/// Estimate minus truth: scales, p_b_m [m], roll/pitch/yaw difference [rad], the tangent error
+/// and its NEES over the seven observable states (X, Y, roll, pitch, yaw, s_v, s_w).
+struct CalibrationError {
+  double s_v = 0.0, s_w = 0.0;
+  Eigen::Vector3d p_b_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rpy = Eigen::Vector3d::Zero();
+  Eigen::Matrix<double, 8, 1> tangent = Eigen::Matrix<double, 8, 1>::Zero();
+  double nees7 = 0.0;
+};
+CalibrationError calibrationError(const CalibrationEstimate& estimate,
+                                  const OdometerCalibration& truth);
+
+/// Writes the three output files into `folder` (created if needed), each atomically.
+void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
+                         const OdometerCalibration* truth = nullptr);
+
+/// d rpy(q Exp(theta)) / d theta (numeric): maps tangent covariances to roll/pitch/yaw and back.
+Eigen::Matrix3d rpyTangentJacobian(const Eigen::Quaterniond& q);
+
+/// The names of the files writeCalibrationRun() writes.
+std::vector<std::string> calibrationOutputFiles();
+
+}  // namespace giocal

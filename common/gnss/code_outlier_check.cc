@@ -1,0 +1,69 @@
+#include "common/gnss/code_outlier_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace giocal {
+
+std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
+  struct Candidate {
+    Key key;
+    double P, range_rate, jump;
+    bool tracked;
+  };
+  std::vector<Candidate> cands;
+  for (const SatObs& so : epoch.sats) {
+    for (const SignalObs& s : so.signals) {
+      if (!std::isfinite(s.P) || !std::isfinite(s.D)) continue;
+      const Key key{so.sat, s.band};
+      if (std::any_of(cands.begin(), cands.end(), [&](const Candidate& c) { return c.key == key; }))
+        continue;  // one signal per band
+      const double rate = -kSpeedOfLight / carrierFrequency(so.sat.sys, s.band) * s.D;
+      Candidate c{key, s.P, rate, 0.0, false};
+      const auto it = tracks_.find(key);
+      if (it != tracks_.end()) {
+        const double dt = epoch.t - it->second.t;
+        if (dt > 0.0 && dt <= options_.max_gap_s) {
+          c.jump = s.P - (it->second.P + 0.5 * (it->second.range_rate + rate) * dt);
+          c.tracked = true;
+        }
+      }
+      cands.push_back(c);
+    }
+  }
+  // The receiver clock moves every pseudo-range alike: take the median jump as common.
+  std::vector<double> jumps;
+  for (const Candidate& c : cands) {
+    if (c.tracked) jumps.push_back(c.jump);
+  }
+  const bool decide = static_cast<int>(jumps.size()) >= options_.min_satellites;
+  double common = 0.0;
+  if (decide) {
+    std::nth_element(jumps.begin(), jumps.begin() + static_cast<long>(jumps.size() / 2),
+                     jumps.end());
+    common = jumps[jumps.size() / 2];
+  }
+  std::set<Key> outliers;
+  std::map<Key, Track> next;
+  for (const auto& [key, tr] : tracks_) {
+    if (epoch.t - tr.t <= options_.max_gap_s) next[key] = tr;  // unseen this epoch: kept a while
+  }
+  for (const Candidate& c : cands) {
+    Track tr{epoch.t, c.P, c.range_rate, 0};
+    if (decide && c.tracked && std::abs(c.jump - common) > options_.threshold_m) {
+      const Track& old = tracks_.at(c.key);
+      if (old.rejected_in_row + 1 < options_.max_consecutive) {
+        outliers.insert(c.key);
+        // Keep predicting from the last good value so one outlier does not poison the next epoch.
+        tr.P = c.P - c.jump + common;
+        tr.rejected_in_row = old.rejected_in_row + 1;
+      }
+    }
+    next[c.key] = tr;
+  }
+  tracks_ = std::move(next);
+  return outliers;
+}
+
+}  // namespace giocal

@@ -1,0 +1,76 @@
+// CalibrationFilter: the error-state EKF over navigation, odometer calibration, GNSS lever arm,
+// receiver clock drift and SD ambiguities; IMU time update, odometer and motion-constraint
+// updates. GNSS epochs are handled by GnssUpdate (ekf/gnss_update.h) through update().
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/calibration/calibration_options.h"
+#include "common/calibration/calibration_run.h"
+#include "common/calibration/initial_state.h"
+#include "common/geodesy/wgs84.h"
+#include "common/imu/imu_sample.h"
+#include "common/motion/motion_detector.h"
+#include "common/odometer/odom_sample.h"
+#include "ekf/kalman_update.h"
+#include "ekf/state_registry.h"
+
+namespace giocal {
+
+/// Registry names of the variables besides the navigation ones (ekf/imu_propagation.h).
+namespace ekf_var {
+inline const char* const kPbg = "p_b_g";
+inline const char* const kClockDrift = "cdt_dot";
+inline const char* const kHeadingClone = "q_n_b@still";  // attitude when the robot stopped
+}  // namespace ekf_var
+
+class CalibrationFilter {
+ public:
+  /// `imu` must outlive the filter. The state starts at init.x.t.
+  CalibrationFilter(const CalibrationOptions& options, const DatasetDescription& dataset,
+                    const std::vector<ImuSample>& imu, const InitialState& init);
+
+  double time() const { return t_; }
+  const LocalFrame& frame() const { return frame_; }
+  const StateRegistry& state() const { return s_; }
+  StateRegistry& state() { return s_; }
+  const CalibrationOptions& options() const { return options_; }
+
+  /// Time update to t >= time(): every IMU sample in between is integrated (the covariance moves
+  /// once per call with the interval's preintegrated noise); scales, clock drift and ambiguities
+  /// get their random-walk noise. Returns the longest IMU gap crossed [s].
+  double propagateTo(double t);
+
+  /// Odometer update at the sample's time (propagate first), then ZUPT, heading and NHC
+  /// constraints when the motion detectors fire. Returns false if the odometer row was gated.
+  bool updateOdometer(const OdomSample& sample);
+
+  /// One gated Kalman update from a shared model whose blocks are the registry variables `names`;
+  /// consider states (p_b_m.z when held) are not corrected.
+  UpdateResult update(const MeasurementModel& model, const std::vector<std::string>& names,
+                      double chi2_gate);
+
+  /// Raw gyro interpolated at t.
+  Eigen::Vector3d gyroAt(double t) const;
+
+  NavState nav() const;
+  CalibrationEstimate calibration() const;
+  /// The navigation state as a truth.csv row (IMU origin, ENU velocity and attitude).
+  TruthSample trajectorySample() const;
+  bool standingStill() const { return s_.has(ekf_var::kHeadingClone); }
+
+ private:
+  std::vector<int> heldIndices() const;
+
+  CalibrationOptions options_;
+  DatasetDescription dataset_;
+  const std::vector<ImuSample>& imu_;
+  LocalFrame frame_;
+  StateRegistry s_;
+  MotionDetector motion_;
+  double t_ = 0.0;
+  double chi2_odometer_ = 0.0;
+};
+
+}  // namespace giocal

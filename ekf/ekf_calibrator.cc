@@ -1,0 +1,159 @@
+#include "ekf/ekf_calibrator.h"
+
+#include <chrono>
+#include <memory>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/calibration/initial_state.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/math/rotation.h"
+#include "ekf/calibration_filter.h"
+#include "ekf/gnss_update.h"
+
+namespace giocal {
+namespace {
+
+constexpr size_t kMaxWarnings = 20;
+
+void warn(CalibrationRun& run, const std::string& w) {
+  if (run.warnings.size() < kMaxWarnings) run.warnings.push_back(w);
+  if (run.warnings.size() == kMaxWarnings) run.warnings.push_back("(further warnings omitted)");
+}
+
+std::string at(double t) {
+  std::ostringstream s;
+  s.precision(10);
+  s << t;
+  return s.str();
+}
+
+bool finiteState(const StateRegistry& s) {
+  if (!s.covariance().allFinite()) return false;
+  for (const std::string& n : s.names()) {
+    if (!s.value(n).allFinite()) return false;
+  }
+  return true;
+}
+
+/// The dataset with its calibration prior replaced by an estimate (for a re-initialization).
+DatasetDescription withPrior(DatasetDescription d, const CalibrationEstimate& e) {
+  CalibrationPrior& p = d.initial_calibration;
+  p.mean = e.calib;
+  // Keep the prior's sigma where the estimate claims more (a diverged filter is not trusted).
+  p.sd_s_v = std::max(p.sd_s_v, std::sqrt(e.cov(calib_index::kSv, calib_index::kSv)));
+  p.sd_s_w = std::max(p.sd_s_w, std::sqrt(e.cov(calib_index::kSw, calib_index::kSw)));
+  return d;
+}
+
+}  // namespace
+
+CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  CalibrationRun run;
+  run.estimator = "ekf";
+  run.data_duration_s = in.dataDuration();
+  run.p_b_m_z = options.hold_p_b_m_z
+                    ? "held at the prior (consider state): planar motion leaves it unobservable"
+                    : "estimated; unobservable under planar motion, its sigma stays near the prior";
+  const BroadcastOrbits orbits(in.nav);
+  DatasetDescription dataset = in.description;
+
+  std::string why;
+  auto init =
+      findInitialState(in, options, dataset.initial_calibration, in.imu.front().t, &why);
+  if (!init) throw std::runtime_error("could not initialize: " + why);
+  run.t_initialized = init->x.t;
+  auto filter = std::make_unique<CalibrationFilter>(options, dataset, in.imu, *init);
+  auto gnss = std::make_unique<GnssUpdate>(orbits, in.base_e, options);
+
+  const double t_end = in.imu.back().t;
+  size_t k_odo = 0, k_gnss = 0, k_base = 0;
+  double next_output = init->x.t;
+  long odo_rejected_in_row = 0;
+  auto& counters = run.counters;
+  for (const char* c : {"odometer_updates", "odometer_rejected", "dd_rows", "gnss_rows_rejected",
+                        "code_outliers", "ambiguity_resets", "gnss_without_base",
+                        "reinitializations"}) {
+    counters[c] = 0;
+  }
+
+  while (true) {
+    while (k_odo < in.odom.size() && in.odom[k_odo].t <= filter->time()) ++k_odo;
+    while (k_gnss < in.rover.epochs.size() && in.rover.epochs[k_gnss].t < filter->time()) ++k_gnss;
+    const double t_odo = k_odo < in.odom.size() ? in.odom[k_odo].t : INFINITY;
+    const double t_gnss = k_gnss < in.rover.epochs.size() ? in.rover.epochs[k_gnss].t : INFINITY;
+    const double t_next = std::min(t_odo, t_gnss);
+    if (!(t_next <= t_end)) break;
+
+    const double gap = filter->propagateTo(t_next);
+    if (gap > options.max_imu_gap_s) {
+      warn(run, "IMU gap of " + at(gap) + " s before t=" + at(t_next) +
+                    ": bridged by interpolation, the covariance grows with it");
+    }
+    if (t_odo <= t_gnss) {
+      const bool ok = filter->updateOdometer(in.odom[k_odo]);
+      ++counters["odometer_updates"];
+      if (!ok) {
+        ++counters["odometer_rejected"];
+        if (++odo_rejected_in_row == 50) {
+          warn(run, "50 odometer samples in a row rejected by the innovation gate at t=" +
+                        at(t_odo) + " (wheel slip, wrong scale or time offset?)");
+        }
+      } else {
+        odo_rejected_in_row = 0;
+      }
+      ++k_odo;
+    } else {
+      const ObsEpoch& rover = in.rover.epochs[k_gnss];
+      while (k_base + 1 < in.base.epochs.size() &&
+             std::abs(in.base.epochs[k_base + 1].t - rover.t) <=
+                 std::abs(in.base.epochs[k_base].t - rover.t)) {
+        ++k_base;
+      }
+      ++k_gnss;
+      if (std::abs(in.base.epochs[k_base].t - rover.t) > options.max_base_offset) {
+        ++counters["gnss_without_base"];
+        continue;
+      }
+      const GnssEpochReport rep = gnss->process(*filter, rover, in.base.epochs[k_base]);
+      counters["dd_rows"] += rep.dd_rows;
+      counters["gnss_rows_rejected"] += rep.rejected_rows;
+      counters["code_outliers"] += rep.code_outliers;
+      counters["ambiguity_resets"] += rep.ambiguity_resets;
+      if (rep.diverged || !finiteState(filter->state())) {
+        warn(run, "the filter diverged at t=" + at(rover.t) +
+                      " (GNSS code far outside its predicted spread); re-initializing");
+        ++counters["reinitializations"];
+        const CalibrationEstimate last = filter->calibration();
+        dataset = withPrior(in.description, last);
+        init = findInitialState(in, options, dataset.initial_calibration, rover.t, &why);
+        if (!init) {
+          warn(run, "no re-initialization possible after t=" + at(rover.t) + ": " + why);
+          break;
+        }
+        filter = std::make_unique<CalibrationFilter>(options, dataset, in.imu, *init);
+        gnss = std::make_unique<GnssUpdate>(orbits, in.base_e, options);
+        continue;
+      }
+      if (rep.used) {
+        ++run.gnss_epochs;
+        run.fixed_epochs += rep.fixed;
+      }
+      run.history.push_back(filter->calibration());
+    }
+    if (filter->time() >= next_output) {
+      run.trajectory.push_back(filter->trajectorySample());
+      next_output = filter->time() + 1.0 / options.output_rate_hz - 1e-9;
+    }
+  }
+  if (run.history.empty() || run.history.back().t < filter->time()) {
+    run.history.push_back(filter->calibration());
+  }
+  run.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace giocal

@@ -1,0 +1,245 @@
+#include "ekf/gnss_update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "common/gnss/doppler.h"
+#include "common/gnss/lambda.h"
+#include "common/gnss/spp.h"
+#include "common/models/ambiguity_fix_model.h"
+#include "common/models/dd_gnss_model.h"
+#include "common/models/doppler_model.h"
+#include "ekf/imu_propagation.h"
+
+namespace giocal {
+
+std::string ambiguityName(const SatId& sat, char band) {
+  return "N:" + sat.str() + ":" + std::string(1, band);
+}
+
+namespace {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+std::vector<std::string> modelNames(const MeasurementModel& m,
+                                    const std::vector<std::string>& first) {
+  std::vector<std::string> names = first;
+  for (size_t k = first.size(); k < m.blocks().size(); ++k) names.push_back(m.blocks()[k].name);
+  return names;
+}
+
+}  // namespace
+
+GnssUpdate::GnssUpdate(const BroadcastOrbits& orbits, const Eigen::Vector3d& base_e,
+                       const CalibrationOptions& options)
+    : orbits_(orbits),
+      options_(options),
+      builder_(orbits, base_e, options.dd),
+      rover_check_(options.code_outliers),
+      base_check_(options.code_outliers) {}
+
+void GnssUpdate::resetAmbiguity(StateRegistry& s, const std::string& name, double value,
+                                double lambda) {
+  if (s.has(name)) s.remove(name);
+  // Start from code: 10 m of uncertainty covers code noise and multipath.
+  s.add(vectorBlock(name, 1), Eigen::VectorXd::Constant(1, value),
+        Eigen::MatrixXd::Constant(1, 1, std::pow(10.0 / lambda, 2)));
+  ambiguities_.insert(name);
+}
+
+GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
+                                    const ObsEpoch& base) {
+  GnssEpochReport rep;
+  f.propagateTo(rover.t);
+  StateRegistry& s = f.state();
+  const double dt = std::isnan(t_last_) ? 0.0 : rover.t - t_last_;
+  t_last_ = rover.t;
+
+  // Stage 1: pseudo-ranges that disagree with their Doppler-predicted change.
+  const std::set<CodeOutlierCheck::Key> bad_rover = rover_check_.check(rover);
+  const std::set<CodeOutlierCheck::Key> bad_base = base_check_.check(base);
+
+  const NavState x = f.nav();
+  const Eigen::Vector3d ant_e =
+      f.frame().ecefFromEnu(x.p_n_b + x.q_n_b * s.value(ekf_var::kPbg));
+  const DdEpoch ep = builder_.build(rover, base, ant_e);
+
+  // SD ambiguities: random walk, restart after slips, add new, drop unseen.
+  const double qa = options_.ambiguity_noise * options_.ambiguity_noise * dt;
+  for (const std::string& n : ambiguities_) s.covariance()(s.offset(n), s.offset(n)) += qa;
+  std::set<std::string> seen;
+  std::map<std::string, const SdAmbiguity*> by_name;
+  for (const SdAmbiguity& a : ep.ambiguities) {
+    const std::string n = ambiguityName(a.sat, a.band);
+    seen.insert(n);
+    by_name[n] = &a;
+    if (a.slipped || !s.has(n)) {
+      rep.ambiguity_resets += a.slipped && s.has(n);
+      resetAmbiguity(s, n, a.code_value, a.lambda);
+    }
+  }
+  for (const std::string& n : std::vector<std::string>(ambiguities_.begin(), ambiguities_.end())) {
+    if (!seen.count(n)) {
+      s.remove(n);
+      ambiguities_.erase(n);
+    }
+  }
+
+  // Rows: phase always, code unless stage 1 flagged either satellite at either receiver.
+  std::vector<DdObservation> rows;
+  for (const DdObservation& o : ep.obs) {
+    if (!o.phase) {
+      const auto flagged = [&](const SatId& sat) {
+        return bad_rover.count({sat, o.band}) || bad_base.count({sat, o.band});
+      };
+      if (flagged(o.sat) || flagged(o.ref)) {
+        ++rep.code_outliers;
+        continue;
+      }
+    }
+    rows.push_back(o);
+  }
+
+  // Stage 2: the worst row beyond the innovation gate goes, until none is left; a phase row's
+  // ambiguity restarts from code (most likely an undetected slip).
+  const std::vector<std::string> nav_names{nav_var::kP, nav_var::kQ, ekf_var::kPbg};
+  while (!rows.empty()) {
+    const DdGnssModel model(f.frame(), ep.geometry, rows, ep.undiff_variance);
+    const MeasurementRows lin = linearize(model, s.bind(modelNames(model, nav_names)), s.dim());
+    const Eigen::VectorXd z = normalizedInnovations(s.covariance(), lin);
+    // Divergence: the code rows as a whole far outside their predicted spread.
+    std::vector<double> code_z;
+    for (size_t k = 0; k < rows.size(); ++k) {
+      if (!rows[k].phase) code_z.push_back(z[static_cast<long>(k)]);
+    }
+    if (code_z.size() >= 4 && median(code_z) > options_.divergence_sigma) {
+      rep.diverged = true;
+      return rep;
+    }
+    long worst = 0;
+    const double zmax = z.maxCoeff(&worst);
+    if (zmax <= options_.innovation_gate) break;
+    const DdObservation bad = rows[static_cast<size_t>(worst)];
+    rows.erase(rows.begin() + worst);
+    ++rep.rejected_rows;
+    if (bad.phase) {
+      const std::string n = ambiguityName(bad.sat, bad.band);
+      resetAmbiguity(s, n, by_name.at(n)->code_value, bad.lambda);
+      ++rep.ambiguity_resets;
+    }
+  }
+  if (!rows.empty()) {
+    const DdGnssModel model(f.frame(), ep.geometry, rows, ep.undiff_variance);
+    rep.used = f.update(model, modelNames(model, nav_names), INFINITY).accepted;
+    rep.dd_rows = static_cast<int>(rows.size());
+  }
+
+  updateDoppler(f, rover, ant_e, dt, rep);
+
+  if (rep.used && options_.ambiguity_resolution) {
+    std::vector<DdObservation> phase_rows;
+    for (const DdObservation& o : rows) {
+      if (o.phase) phase_rows.push_back(o);
+    }
+    resolveAmbiguities(f, ep, phase_rows, rep);
+  }
+  return rep;
+}
+
+void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
+                               const Eigen::Vector3d& ant_e, double dt, GnssEpochReport& rep) {
+  std::vector<DopplerObservation> obs = dopplerObservations(rover, orbits_, ant_e, options_.doppler);
+  if (obs.size() < 4) return;
+  StateRegistry& s = f.state();
+  const Eigen::Vector3d gyro = f.gyroAt(rover.t);
+  const std::vector<std::string> names{nav_var::kV, nav_var::kQ, nav_var::kBg, ekf_var::kPbg,
+                                       ekf_var::kClockDrift};
+  if (!s.has(ekf_var::kClockDrift) || dt > 30.0) {
+    // Start the clock drift from the median residual at zero drift.
+    if (s.has(ekf_var::kClockDrift)) s.remove(ekf_var::kClockDrift);
+    s.add(vectorBlock(ekf_var::kClockDrift, 1), Eigen::VectorXd::Zero(1),
+          Eigen::MatrixXd::Constant(1, 1, 1.0));
+    const DopplerModel m(f.frame().R_e_n(), gyro, obs);
+    const MeasurementRows lin = linearize(m, s.bind(names), s.dim());
+    s.value(ekf_var::kClockDrift)[0] =
+        -median(std::vector<double>(lin.residual.data(), lin.residual.data() + lin.residual.size()));
+  } else {
+    const int i = s.offset(ekf_var::kClockDrift);
+    s.covariance()(i, i) += options_.clock_drift_noise * options_.clock_drift_noise * dt;
+  }
+  while (obs.size() >= 4) {
+    const DopplerModel m(f.frame().R_e_n(), gyro, obs);
+    const Eigen::VectorXd z =
+        normalizedInnovations(s.covariance(), linearize(m, s.bind(names), s.dim()));
+    long worst = 0;
+    if (z.maxCoeff(&worst) <= options_.innovation_gate) {
+      f.update(m, names, INFINITY);
+      return;
+    }
+    obs.erase(obs.begin() + worst);
+    ++rep.rejected_rows;
+  }
+}
+
+void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
+                                    const std::vector<DdObservation>& phase_rows,
+                                    GnssEpochReport& rep) {
+  StateRegistry& s = f.state();
+  const long na = static_cast<long>(phase_rows.size());
+  if (na < options_.lambda.min_fixed) return;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(na, s.dim());
+  Eigen::VectorXd a(na);
+  std::vector<double> el;
+  for (long k = 0; k < na; ++k) {
+    const DdObservation& o = phase_rows[static_cast<size_t>(k)];
+    const std::string ns = ambiguityName(o.sat, o.band), nr = ambiguityName(o.ref, o.band);
+    A(k, s.offset(ns)) = 1.0;
+    A(k, s.offset(nr)) = -1.0;
+    a[k] = s.value(ns)[0] - s.value(nr)[0];
+    el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
+  }
+  const Eigen::MatrixXd Qa = A * s.covariance() * A.transpose();
+  std::vector<int> drop(static_cast<size_t>(na));
+  std::iota(drop.begin(), drop.end(), 0);
+  std::sort(drop.begin(), drop.end(),
+            [&](int i, int j) { return el[static_cast<size_t>(i)] < el[static_cast<size_t>(j)]; });
+  AmbiguityFix fix;
+  try {
+    fix = giocal::resolveAmbiguities(a, Qa, drop, options_.lambda);
+  } catch (const std::invalid_argument&) {
+    return;  // float covariance not positive definite: no fix this epoch
+  }
+  rep.ratio = fix.ratio;
+  if (!fix.fixed) return;
+
+  std::vector<DdAmbiguityFix> fixes;
+  for (size_t k = 0; k < fix.indices.size(); ++k) {
+    const DdObservation& o = phase_rows[static_cast<size_t>(fix.indices[k])];
+    fixes.push_back({ambiguityName(o.sat, o.band), ambiguityName(o.ref, o.band),
+                     fix.values[static_cast<long>(k)]});
+  }
+  // Apply the fixes, then keep them only if the fixed solution fits every DD phase row.
+  const StateRegistry saved = s;
+  const AmbiguityFixModel constraint(fixes, options_.fix_sigma_cycles);
+  std::vector<std::string> names;
+  for (const StateBlock& b : constraint.blocks()) names.push_back(b.name);
+  f.update(constraint, names, INFINITY);
+  const DdGnssModel model(f.frame(), ep.geometry, phase_rows, ep.undiff_variance);
+  const MeasurementRows lin = linearize(
+      model, s.bind(modelNames(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg})), s.dim());
+  const Eigen::VectorXd sd = lin.R.diagonal().cwiseSqrt();
+  if ((lin.residual.cwiseAbs().array() / sd.array()).maxCoeff() > options_.max_fix_residual) {
+    s = saved;
+    ++rep.rejected_rows;
+    return;
+  }
+  rep.fixed = true;
+  rep.fixed_ambiguities = static_cast<int>(fixes.size());
+}
+
+}  // namespace giocal

@@ -1,0 +1,51 @@
+// GnssUpdate: one GNSS epoch in the EKF: Doppler-aided code outlier check (stage 1), DD epoch,
+// SD ambiguity states (added, reset on slips, removed when unseen), gated DD code and phase update
+// (stage 2), gated Doppler update with clock drift, then LAMBDA partial fixing validated by ratio
+// and fixed-solution residuals and applied as tight constraints.
+#pragma once
+
+#include <set>
+#include <string>
+
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/code_outlier_check.h"
+#include "common/gnss/dd_epoch.h"
+#include "ekf/calibration_filter.h"
+
+namespace giocal {
+
+struct GnssEpochReport {
+  bool used = false;      // a DD update was made
+  bool fixed = false;     // validated ambiguity fixes were applied
+  bool diverged = false;  // DD code innovations far outside their covariance
+  int dd_rows = 0, rejected_rows = 0, code_outliers = 0, ambiguity_resets = 0;
+  int fixed_ambiguities = 0;
+  double ratio = 0.0;
+};
+
+class GnssUpdate {
+ public:
+  GnssUpdate(const BroadcastOrbits& orbits, const Eigen::Vector3d& base_e,
+             const CalibrationOptions& options);
+  /// Propagates `filter` to the rover epoch and updates it.
+  GnssEpochReport process(CalibrationFilter& filter, const ObsEpoch& rover, const ObsEpoch& base);
+
+ private:
+  void resetAmbiguity(StateRegistry& s, const std::string& name, double value, double lambda);
+  void updateDoppler(CalibrationFilter& f, const ObsEpoch& rover, const Eigen::Vector3d& ant_e,
+                     double dt, GnssEpochReport& rep);
+  void resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
+                          const std::vector<DdObservation>& phase_rows, GnssEpochReport& rep);
+
+  const BroadcastOrbits& orbits_;
+  CalibrationOptions options_;
+  DdEpochBuilder builder_;
+  CodeOutlierCheck rover_check_, base_check_;
+  std::set<std::string> ambiguities_;  // registry names of the SD ambiguity states
+  double t_last_ = NAN;
+};
+
+/// Registry name of the SD ambiguity of (sat, band), the block name DdGnssModel uses.
+std::string ambiguityName(const SatId& sat, char band);
+
+}  // namespace giocal
