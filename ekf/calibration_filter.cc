@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "common/gnss/spp.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/math/rotation.h"
 #include "common/models/heading_change_model.h"
 #include "common/models/nhc_model.h"
-#include "common/models/odometer_velocity_model.h"
+#include "common/models/odometer_preintegration_model.h"
 #include "common/models/zupt_model.h"
 #include "ekf/imu_propagation.h"
 
@@ -32,7 +34,7 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
       frame_(init.origin_e),
       motion_(detectorOptions(options, dataset.imu_noise)),
       t_(init.x.t),
-      chi2_odometer_(chi2Quantile(options.chi2_probability, 2)) {
+      chi2_odometer_(chi2Quantile(options.chi2_probability, 6)) {
   // Navigation first, in the order of the IMU residual (p, theta, v, b_a, b_g), then calibration.
   const auto blk = [](const Eigen::MatrixXd& P, int i, int n) { return P.block(i, i, n, n); };
   const Eigen::MatrixXd Pn = init.P_nav;
@@ -68,22 +70,46 @@ std::vector<int> CalibrationFilter::heldIndices() const {
 }
 
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,
-                                       const std::vector<std::string>& names, double chi2_gate) {
-  const MeasurementRows rows = linearize(model, s_.bind(names), s_.dim());
+                                       const std::vector<std::string>& names, double chi2_gate,
+                                       double gyro_variance) {
+  MeasurementRows rows = linearize(model, s_.bind(names), s_.dim());
+  if (gyro_variance > 0.0) {
+    const Eigen::MatrixXd H_bg = rows.H.middleCols(s_.offset(nav_var::kBg), 3);
+    rows.R += gyro_variance * H_bg * H_bg.transpose();
+  }
   const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices());
   if (r.accepted) s_.correct(r.dx);
   return r;
 }
 
-Eigen::Vector3d CalibrationFilter::gyroAt(double t) const {
+CalibrationFilter::Gyro CalibrationFilter::gyroAt(double t) const {
   const auto it = std::lower_bound(imu_.begin(), imu_.end(), t,
                                    [](const ImuSample& s, double x) { return s.t < x; });
-  if (it == imu_.begin()) return imu_.front().gyro;
-  if (it == imu_.end()) return imu_.back().gyro;
+  const double density = dataset_.imu_noise.gyro_noise_density;
+  if (it == imu_.begin() || it == imu_.end()) {
+    const ImuSample& s = it == imu_.end() ? imu_.back() : imu_.front();
+    const double dt = imu_.size() > 1 ? (imu_.back().t - imu_.front().t) / double(imu_.size() - 1)
+                                      : 0.01;
+    return {s.gyro, density * density / dt};
+  }
   const ImuSample& b = *it;
   const ImuSample& a = *(it - 1);
-  const double u = (t - a.t) / (b.t - a.t);
-  return (1.0 - u) * a.gyro + u * b.gyro;
+  const double dt = b.t - a.t, u = (t - a.t) / dt;
+  // Each sample carries density^2 / dt of white noise; interpolation mixes two of them.
+  return {(1.0 - u) * a.gyro + u * b.gyro,
+          density * density / dt * ((1.0 - u) * (1.0 - u) + u * u)};
+}
+
+CalibrationFilter::Gyro CalibrationFilter::gyroMean(double t, double half_window) const {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int n = 0;
+  auto it = std::lower_bound(imu_.begin(), imu_.end(), t - half_window,
+                             [](const ImuSample& s, double x) { return s.t < x; });
+  for (; it != imu_.end() && it->t <= t + half_window; ++it, ++n) sum += it->gyro;
+  if (n < 2) return gyroAt(t);
+  const double dt = 2.0 * half_window / (n - 1);
+  const double density = dataset_.imu_noise.gyro_noise_density;
+  return {sum / n, density * density / dt / n};
 }
 
 double CalibrationFilter::propagateTo(double t) {
@@ -114,17 +140,46 @@ double CalibrationFilter::propagateTo(double t) {
   return gap;
 }
 
+void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
+  for (const char* n : {ekf_var::kOdoP, ekf_var::kOdoQ}) {
+    if (s_.has(n)) s_.remove(n);
+  }
+  s_.clone(nav_var::kP, ekf_var::kOdoP);
+  s_.clone(nav_var::kQ, ekf_var::kOdoQ);
+  OdometerPreintegrationNoise noise;
+  noise.speed_sigma = dataset_.odom_noise.speed_sigma;
+  noise.yaw_rate_sigma = dataset_.odom_noise.yaw_rate_sigma;
+  noise.lateral_speed_density = options_.models.lateral_speed_density;
+  noise.tilt_rate_density = options_.models.tilt_rate_density;
+  odo_pre_ = std::make_unique<OdometerPreintegration>(noise, s_.value(block::kSv)[0],
+                                                      s_.value(block::kSw)[0]);
+  last_odo_ = sample;
+}
+
 bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
   propagateTo(sample.t);
-  const Eigen::Vector3d gyro = gyroAt(sample.t);
   motion_.addOdometer(sample.t, sample.v);
-  const OdometerNoise& on = dataset_.odom_noise;
-  const OdometerVelocityModel odo(sample, gyro, on.speed_sigma, on.yaw_rate_sigma);
-  const UpdateResult r =
-      update(odo,
-             {nav_var::kV, nav_var::kQ, nav_var::kBg, block::kSv, block::kSw, block::kPbm,
-              block::kQbm},
-             chi2_odometer_);
+  bool accepted = true;
+  if (!odo_pre_ || sample.t - last_odo_.t > options_.max_odometer_gap_s) {
+    restartOdometerInterval(sample);  // first sample, or after a gap: nothing to integrate
+  } else {
+    // Readings are instantaneous: the piece between two integrates their mean (trapezoid).
+    if (sample.t > last_odo_.t) {
+      odo_pre_->integrate(sample.t - last_odo_.t, 0.5 * (last_odo_.v + sample.v),
+                          0.5 * (last_odo_.w + sample.w));
+    }
+    last_odo_ = sample;
+    if (odo_pre_->dt() >= options_.odometer_interval_s - 1e-9) {
+      const UpdateResult r = update(
+          OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))),
+          {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
+           block::kPbm, block::kQbm},
+          chi2_odometer_);
+      accepted = r.accepted;
+      restartOdometerInterval(sample);
+    }
+  }
+  const Gyro gyro = gyroMean(sample.t, 0.5 * options_.models.motion.window_s);
 
   if (motion_.isStatic()) {
     update(ZuptModel(options_.models.zupt_sigma), {nav_var::kV},
@@ -139,11 +194,13 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
     s_.remove(ekf_var::kHeadingClone);
   }
   if (motion_.nhcApplies()) {
-    update(NhcModel(gyro, options_.models.nhc_sigma),
+    // The mean rate over the window: a single noisy sample in the lever-arm term would bias the
+    // extrinsic (errors in variables).
+    update(NhcModel(gyro.rate, options_.models.nhc_sigma),
            {nav_var::kV, nav_var::kQ, nav_var::kBg, block::kPbm, block::kQbm},
-           chi2Quantile(options_.chi2_probability, 2));
+           chi2Quantile(options_.chi2_probability, 2), gyro.variance);
   }
-  return r.accepted;
+  return accepted;
 }
 
 NavState CalibrationFilter::nav() const {

@@ -3,6 +3,7 @@
 // updates. GNSS epochs are handled by GnssUpdate (ekf/gnss_update.h) through update().
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "common/imu/imu_sample.h"
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odom_sample.h"
+#include "common/odometer/odometer_preintegration.h"
 #include "ekf/kalman_update.h"
 #include "ekf/state_registry.h"
 
@@ -23,6 +25,8 @@ namespace ekf_var {
 inline const char* const kPbg = "p_b_g";
 inline const char* const kClockDrift = "cdt_dot";
 inline const char* const kHeadingClone = "q_n_b@still";  // attitude when the robot stopped
+inline const char* const kOdoP = "p_n_b@odo";  // pose at the start of the odometer interval
+inline const char* const kOdoQ = "q_n_b@odo";
 }  // namespace ekf_var
 
 class CalibrationFilter {
@@ -42,17 +46,27 @@ class CalibrationFilter {
   /// get their random-walk noise. Returns the longest IMU gap crossed [s].
   double propagateTo(double t);
 
-  /// Odometer update at the sample's time (propagate first), then ZUPT, heading and NHC
-  /// constraints when the motion detectors fire. Returns false if the odometer row was gated.
+  /// Odometer sample at its time (propagate first). The samples are preintegrated (the paper's
+  /// integral measurement) from a stochastic clone of the pose; every odometer_interval_s the
+  /// interval updates the filter and the clone restarts. Then ZUPT, heading and NHC constraints
+  /// when the motion detectors fire. Returns false if an odometer update was gated.
   bool updateOdometer(const OdomSample& sample);
 
   /// One gated Kalman update from a shared model whose blocks are the registry variables `names`;
-  /// consider states (p_b_m.z when held) are not corrected.
+  /// consider states (p_b_m.z when held) are not corrected. Models that take a raw gyro sample
+  /// pass its per-axis variance: the sample enters as (gyro - b_g), so its noise reaches the
+  /// residual through the b_g columns of H and is added to R as gyro_variance H_bg H_bg^T.
   UpdateResult update(const MeasurementModel& model, const std::vector<std::string>& names,
-                      double chi2_gate);
+                      double chi2_gate, double gyro_variance = 0.0);
 
-  /// Raw gyro interpolated at t.
-  Eigen::Vector3d gyroAt(double t) const;
+  /// Raw gyro at t, linearly interpolated, and the per-axis variance of its white noise.
+  struct Gyro {
+    Eigen::Vector3d rate;
+    double variance = 0.0;
+  };
+  Gyro gyroAt(double t) const;
+  /// Mean raw gyro over [t - half_window, t + half_window] and the variance of that mean.
+  Gyro gyroMean(double t, double half_window) const;
 
   NavState nav() const;
   CalibrationEstimate calibration() const;
@@ -62,6 +76,7 @@ class CalibrationFilter {
 
  private:
   std::vector<int> heldIndices() const;
+  void restartOdometerInterval(const OdomSample& sample);
 
   CalibrationOptions options_;
   DatasetDescription dataset_;
@@ -71,6 +86,8 @@ class CalibrationFilter {
   MotionDetector motion_;
   double t_ = 0.0;
   double chi2_odometer_ = 0.0;
+  std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
+  OdomSample last_odo_;
 };
 
 }  // namespace giocal

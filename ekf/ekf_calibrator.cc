@@ -65,6 +65,10 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
       findInitialState(in, options, dataset.initial_calibration, in.imu.front().t, &why);
   if (!init) throw std::runtime_error("could not initialize: " + why);
   run.t_initialized = init->x.t;
+  run.initialization = {{"static_window_s", init->static_window_s},
+                        {"heading_baseline_m", init->heading_baseline_m},
+                        {"heading_sigma_deg", init->heading_sigma * kRadToDeg},
+                        {"b_g_z_deg_h", init->x.b_g.z() * kRadToDeg * 3600.0}};
   auto filter = std::make_unique<CalibrationFilter>(options, dataset, in.imu, *init);
   auto gnss = std::make_unique<GnssUpdate>(orbits, in.base_e, options);
 

@@ -156,7 +156,7 @@ void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
   std::vector<DopplerObservation> obs = dopplerObservations(rover, orbits_, ant_e, options_.doppler);
   if (obs.size() < 4) return;
   StateRegistry& s = f.state();
-  const Eigen::Vector3d gyro = f.gyroAt(rover.t);
+  const CalibrationFilter::Gyro gyro = f.gyroAt(rover.t);
   const std::vector<std::string> names{nav_var::kV, nav_var::kQ, nav_var::kBg, ekf_var::kPbg,
                                        ekf_var::kClockDrift};
   if (!s.has(ekf_var::kClockDrift) || dt > 30.0) {
@@ -164,7 +164,7 @@ void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
     if (s.has(ekf_var::kClockDrift)) s.remove(ekf_var::kClockDrift);
     s.add(vectorBlock(ekf_var::kClockDrift, 1), Eigen::VectorXd::Zero(1),
           Eigen::MatrixXd::Constant(1, 1, 1.0));
-    const DopplerModel m(f.frame().R_e_n(), gyro, obs);
+    const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
     const MeasurementRows lin = linearize(m, s.bind(names), s.dim());
     s.value(ekf_var::kClockDrift)[0] =
         -median(std::vector<double>(lin.residual.data(), lin.residual.data() + lin.residual.size()));
@@ -173,12 +173,12 @@ void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
     s.covariance()(i, i) += options_.clock_drift_noise * options_.clock_drift_noise * dt;
   }
   while (obs.size() >= 4) {
-    const DopplerModel m(f.frame().R_e_n(), gyro, obs);
+    const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
     const Eigen::VectorXd z =
         normalizedInnovations(s.covariance(), linearize(m, s.bind(names), s.dim()));
     long worst = 0;
     if (z.maxCoeff(&worst) <= options_.innovation_gate) {
-      f.update(m, names, INFINITY);
+      f.update(m, names, INFINITY, gyro.variance);
       return;
     }
     obs.erase(obs.begin() + worst);

@@ -123,6 +123,7 @@ void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
       for (int c = 0; c < 8; ++c) cov[static_cast<size_t>(r)].push_back(C(r, c));
     j["covariance_tangent"] = cov;
   }
+  j["initialization"] = run.initialization;
   j["counters"] = run.counters;
   j["warnings"] = run.warnings;
   if (truth && !run.history.empty()) {

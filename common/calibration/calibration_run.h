@@ -40,6 +40,7 @@ struct CalibrationRun {
   int gnss_epochs = 0;         // rover epochs used with a base epoch
   int fixed_epochs = 0;        // of those, epochs with validated ambiguity fixes
   std::string p_b_m_z;         // how the unobservable p_b_m.z was treated
+  std::map<std::string, double> initialization;  // static window, heading baseline and sigma
   std::map<std::string, long> counters;  // rejected rows, outliers, resets, ...
   std::vector<std::string> warnings;     // bad data met on the way, divergence
 

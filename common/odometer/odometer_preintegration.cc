@@ -1,5 +1,7 @@
 #include "common/odometer/odometer_preintegration.h"
 
+#include <algorithm>
+
 #include <stdexcept>
 
 namespace giocal {
@@ -69,10 +71,28 @@ void OdometerPreintegration::integrateSamples(const std::vector<OdomSample>& sam
   if (samples.empty() || samples.front().t > t0) {
     throw std::invalid_argument("OdometerPreintegration: samples do not cover the interval");
   }
-  for (size_t k = 0; k < samples.size(); ++k) {
+  // Samples are instantaneous readings: each piece between two samples integrates the mean of
+  // the readings interpolated at its ends (exact for linear ramps, no half-sample lag); after
+  // the last sample its reading holds.
+  const auto first = std::upper_bound(samples.begin(), samples.end(), t0,
+                                      [](double t, const OdomSample& s) { return t < s.t; });
+  for (size_t k = static_cast<size_t>(first - samples.begin()) - 1;
+       k < samples.size() && samples[k].t < t1; ++k) {
     const double a = std::max(samples[k].t, t0);
-    const double b = k + 1 < samples.size() ? std::min(samples[k + 1].t, t1) : t1;
-    if (b > a) integrate(b - a, samples[k].v, samples[k].w);
+    if (k + 1 == samples.size()) {
+      integrate(t1 - a, samples[k].v, samples[k].w);
+      break;
+    }
+    const OdomSample& s0 = samples[k];
+    const OdomSample& s1 = samples[k + 1];
+    const double b = std::min(s1.t, t1);
+    if (b <= a) continue;
+    const auto at = [&](double t, double OdomSample::*f) {
+      const double u = (t - s0.t) / (s1.t - s0.t);
+      return (1.0 - u) * (s0.*f) + u * (s1.*f);
+    };
+    integrate(b - a, 0.5 * (at(a, &OdomSample::v) + at(b, &OdomSample::v)),
+              0.5 * (at(a, &OdomSample::w) + at(b, &OdomSample::w)));
   }
 }
 

@@ -46,7 +46,8 @@ class OdometerPreintegration {
   /// Adds dt seconds over which the measured speed v and yaw rate w are constant (an arc).
   void integrate(double dt, double v, double w);
 
-  /// Integrates the samples covering [t0, t1]; each sample holds until the next one.
+  /// Integrates the samples covering [t0, t1], interpolating linearly between samples (the last
+  /// one holds).
   void integrateSamples(const std::vector<OdomSample>& samples, double t0, double t1);
 
   double dt() const { return dt_sum_; }
