@@ -108,6 +108,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   rtk.lambda = options.lambda;
   RtkFilter filter(orbits, in.base_e, rtk);
   std::optional<AntennaFix> anchor;
+  bool anchor_static = false;  // the anchor lies in the static window
   size_t b = 0, k_imu = 0, k_odo = 0;
   // Dead reckoning from the anchor in a yaw-free frame: attitude from the gyro, displacement of
   // the vehicle origin from the odometer through the prior extrinsic and scale.
@@ -132,6 +133,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     const bool in_static = have_static && e.t <= ts1;
     if (!anchor || in_static) {
       anchor = fix;
+      anchor_static = in_static;
       t_dr = e.t;
       R0 = rotationFromRpy(Eigen::Vector3d(align.roll, align.pitch, 0.0));
       R0_anchor = R0;
@@ -168,6 +170,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     if (turned > io.max_turn_deg * kDegToRad) {
       // Too much turning for a clean baseline: restart the baseline here.
       anchor = fix;
+      anchor_static = false;
       R0_anchor = R0;
       d0.setZero();
       turned = 0.0;
@@ -192,33 +195,48 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
       align = alignStatic(window, yaw_static, frame.omega_ie_n(), noise.gyro_noise_density,
                           noise.accel_noise_density);
     }
-    s.x.t = e.t;
-    s.x.q_n_b = Eigen::Quaterniond(R_n_b).normalized();
-    s.x.p_n_b = d_n - R_n_b * d.p_b_g;
-    const double v_odo = (1.0 + prior.s_v) * in.odom[k_odo].v;
-    const Eigen::Vector3d w_now = in.imu[std::min(k_imu, in.imu.size() - 1)].gyro - align.b_g;
-    s.x.v_n_b = R_n_b * (R_b_m * Eigen::Vector3d(0.0, v_odo, 0.0) + w_now.cross(-prior.p_b_m));
+    double v_odo = 0.0;
+    if (anchor_static) {
+      // Rewind to the last static epoch: the state there is known as well (at rest, the heading
+      // now found), and the filter then sees the start of the motion, whose accelerations tell
+      // the IMU's heading apart from the extrinsic's.
+      const Eigen::Matrix3d R_n_b0 = Rz * R0_anchor;
+      s.x.t = anchor->t;
+      s.x.q_n_b = Eigen::Quaterniond(R_n_b0).normalized();
+      s.x.p_n_b = -R_n_b0 * d.p_b_g;
+      s.x.v_n_b.setZero();
+    } else {
+      s.x.t = e.t;
+      s.x.q_n_b = Eigen::Quaterniond(R_n_b).normalized();
+      s.x.p_n_b = d_n - R_n_b * d.p_b_g;
+      v_odo = (1.0 + prior.s_v) * in.odom[k_odo].v;
+      const Eigen::Vector3d w_now = in.imu[std::min(k_imu, in.imu.size() - 1)].gyro - align.b_g;
+      s.x.v_n_b = R_n_b * (R_b_m * Eigen::Vector3d(0.0, v_odo, 0.0) + w_now.cross(-prior.p_b_m));
+    }
+    const AntennaFix& at_state = anchor_static ? *anchor : fix;
     s.x.b_g = have_static ? align.b_g : Eigen::Vector3d::Zero();
     s.x.b_a.setZero();
 
     // Covariance. The heading error: yaw_b = measured - (extrinsic yaw error seen in n).
     const Eigen::Matrix<double, 8, 8> Pc = priorCalibrationCovariance(calib_prior);
-    const Eigen::Matrix3d R_n_m = R_n_b * R_b_m;
+    const Eigen::Matrix3d R_n_bs = s.x.q_n_b.toRotationMatrix();
+    const Eigen::Matrix3d R_n_m = R_n_bs * R_b_m;
     const Eigen::RowVector3d ez_m = R_n_m.row(2);  // d(yaw of m)/d theta_b_m
-    const Eigen::Vector3d ez_b = R_n_b.row(2).transpose();  // n's up axis in b
+    const Eigen::Vector3d ez_b = R_n_bs.row(2).transpose();  // n's up axis in b
     const Eigen::Matrix3d Ptheta = Pc.block<3, 3>(calib_index::kTheta, calib_index::kTheta);
     const double var_yaw = sd_heading * sd_heading + ez_m * Ptheta * ez_m.transpose();
     const double tilt_sd =
         have_static ? std::max(std::hypot(align.sd_tilt, noise.accel_bias_sigma / 9.8), 1e-3)
                     : io.attitude_sigma_deg * kDegToRad;
     // Attitude tangent (b frame): tilt about n's east and north axes, yaw about up.
-    const Eigen::Matrix3d R_b_n = R_n_b.transpose();
+    const Eigen::Matrix3d R_b_n = R_n_bs.transpose();
     Eigen::Matrix3d Patt = R_b_n * Eigen::Vector3d(tilt_sd * tilt_sd, tilt_sd * tilt_sd, var_yaw)
                                        .asDiagonal() *
                            R_b_n.transpose();
     const double lever_sd = d.p_b_g.norm() * std::sqrt(var_yaw);
-    const double sd_pos = std::hypot(fix.sd_h, lever_sd) + 0.01;
-    const double sd_vel = io.velocity_sigma + std::abs(v_odo) * std::sqrt(var_yaw);
+    const double sd_pos = std::hypot(at_state.sd_h, lever_sd) + 0.01;
+    const double sd_vel = anchor_static ? options.models.zupt_sigma
+                                        : io.velocity_sigma + std::abs(v_odo) * std::sqrt(var_yaw);
     const Eigen::Vector3d sd_bg = have_static
                                       ? Eigen::Vector3d(align.sd_b_g.cwiseMax(1e-5))
                                       : Eigen::Vector3d(Eigen::Vector3d::Constant(noise.gyro_bias_sigma));
