@@ -34,6 +34,7 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
       frame_(init.origin_e),
       motion_(detectorOptions(options, dataset.imu_noise)),
       t_(init.x.t),
+      motion_fed_t_(init.x.t),
       chi2_odometer_(chi2Quantile(options.chi2_probability, 6)) {
   // Navigation first, in the order of the IMU residual (p, theta, v, b_a, b_g), then calibration.
   const auto blk = [](const Eigen::MatrixXd& P, int i, int n) { return P.block(i, i, n, n); };
@@ -71,14 +72,41 @@ std::vector<int> CalibrationFilter::heldIndices() const {
 
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,
                                        const std::vector<std::string>& names, double chi2_gate,
-                                       double gyro_variance) {
-  MeasurementRows rows = linearize(model, s_.bind(names), s_.dim());
-  if (gyro_variance > 0.0) {
-    const Eigen::MatrixXd H_bg = rows.H.middleCols(s_.offset(nav_var::kBg), 3);
-    rows.R += gyro_variance * H_bg * H_bg.transpose();
+                                       double gyro_variance, int iterations) {
+  const auto rowsAt = [&](const StateRegistry& at) {
+    MeasurementRows rows = linearize(model, at.bind(names), at.dim());
+    if (gyro_variance > 0.0) {
+      const Eigen::MatrixXd H_bg = rows.H.middleCols(at.offset(nav_var::kBg), 3);
+      rows.R += gyro_variance * H_bg * H_bg.transpose();
+    }
+    return rows;
+  };
+  if (iterations <= 1) {
+    const MeasurementRows rows = rowsAt(s_);
+    const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices());
+    if (r.accepted) s_.correct(r.dx);
+    return r;
   }
-  const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices());
-  if (r.accepted) s_.correct(r.dx);
+  // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
+  // state, keep the prior covariance; the last iteration's gain updates the covariance.
+  const StateRegistry prior = s_;
+  UpdateResult r;
+  for (int it = 0; it < iterations; ++it) {
+    MeasurementRows rows = rowsAt(s_);
+    const Eigen::VectorXd delta = s_.minus(prior);
+    rows.residual += rows.H * (-delta);  // residual linearized about the prior: r(x_i) - H d_i
+    Eigen::MatrixXd P = prior.covariance();
+    r = kalmanUpdate(P, rows, it == 0 ? chi2_gate : INFINITY, heldIndices());
+    if (!r.accepted) {
+      s_ = prior;
+      return r;
+    }
+    StateRegistry next = prior;
+    next.correct(r.dx);
+    s_ = next;
+    s_.covariance() = P;
+    if (r.dx.size() && (r.dx - delta).norm() < 1e-9) break;
+  }
   return r;
 }
 
@@ -112,24 +140,43 @@ CalibrationFilter::Gyro CalibrationFilter::gyroMean(double t, double half_window
   return {sum / n, density * density / dt / n};
 }
 
+void CalibrationFilter::feedMotion(double t) {
+  const Eigen::Vector3d b_g = s_.value(nav_var::kBg);
+  auto it = std::upper_bound(imu_.begin(), imu_.end(), motion_fed_t_,
+                             [](double v, const ImuSample& s) { return v < s.t; });
+  for (; it != imu_.end() && it->t <= t; ++it) motion_.addImu(it->t, it->gyro - b_g);
+  motion_fed_t_ = std::max(motion_fed_t_, t);
+}
+
+const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
+  if (!pending_) {
+    const NavState x = navState(s_);
+    pending_ = std::make_unique<ImuPreintegration>(
+        dataset_.imu_noise, frame_.gravity_n(x.p_n_b), frame_.omega_ie_n(), x.b_a, x.b_g);
+    pending_t_ = t_;
+  }
+  if (t > pending_t_) {
+    pending_->integrateSamples(imu_, pending_t_, t);
+    pending_t_ = t;
+  }
+  return *pending_;
+}
+
 double CalibrationFilter::propagateTo(double t) {
   t = std::min(t, imu_.back().t);
   if (t <= t_) return 0.0;
-  const NavState x = navState(s_);
-  ImuPreintegration pre(dataset_.imu_noise, frame_.gravity_n(x.p_n_b), frame_.omega_ie_n(), x.b_a,
-                        x.b_g);
-  pre.integrateSamples(imu_, t_, t);
-  // The motion detector sees every bias-compensated sample; note the longest gap crossed.
-  double gap = 0.0, t_prev = t_;
+  feedMotion(t);
+  const ImuPreintegration& pre = pendingTo(t);
+  double gap = 0.0, t_prev = t_;  // the longest IMU gap crossed
   auto it = std::upper_bound(imu_.begin(), imu_.end(), t_,
                              [](double v, const ImuSample& s) { return v < s.t; });
   for (; it != imu_.end() && it->t <= t; ++it) {
-    motion_.addImu(it->t, it->gyro - x.b_g);
     gap = std::max(gap, it->t - t_prev);
     t_prev = it->t;
   }
   gap = std::max(gap, t - t_prev);
   propagateImu(s_, pre);
+  pending_.reset();
   const double dt = t - t_;
   const double q = dataset_.odom_noise.scale_random_walk;
   for (const char* name : {block::kSv.c_str(), block::kSw.c_str()}) {
@@ -157,10 +204,18 @@ void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
 }
 
 bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
-  propagateTo(sample.t);
+  // The covariance moves only when something updates it: the end of an odometer interval, a
+  // motion constraint, or a new clone. Between those the samples are only preintegrated.
+  feedMotion(sample.t);
   motion_.addOdometer(sample.t, sample.v);
+  const bool still = motion_.isStatic(), nhc = motion_.nhcApplies();
+  const bool restart = !odo_pre_ || sample.t - last_odo_.t > options_.max_odometer_gap_s;
+  const double piece = restart ? 0.0 : sample.t - last_odo_.t;
+  const bool interval_done =
+      !restart && odo_pre_->dt() + piece >= options_.odometer_interval_s - 1e-9;
+  if (restart || interval_done || still || nhc) propagateTo(sample.t);
   bool accepted = true;
-  if (!odo_pre_ || sample.t - last_odo_.t > options_.max_odometer_gap_s) {
+  if (restart) {
     restartOdometerInterval(sample);  // first sample, or after a gap: nothing to integrate
   } else {
     // Readings are instantaneous: the piece between two integrates their mean (trapezoid).
@@ -169,19 +224,19 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
                           0.5 * (last_odo_.w + sample.w));
     }
     last_odo_ = sample;
-    if (odo_pre_->dt() >= options_.odometer_interval_s - 1e-9) {
+    if (interval_done) {
       const UpdateResult r = update(
           OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))),
           {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
            block::kPbm, block::kQbm},
-          chi2_odometer_);
+          chi2_odometer_, 0.0, options_.odometer_iterations);
       accepted = r.accepted;
       restartOdometerInterval(sample);
     }
   }
   const Gyro gyro = gyroMean(sample.t, 0.5 * options_.models.motion.window_s);
 
-  if (motion_.isStatic()) {
+  if (still) {
     update(ZuptModel(options_.models.zupt_sigma), {nav_var::kV},
            chi2Quantile(options_.chi2_probability, 3));
     if (!s_.has(ekf_var::kHeadingClone)) {
@@ -193,7 +248,7 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
   } else if (s_.has(ekf_var::kHeadingClone)) {
     s_.remove(ekf_var::kHeadingClone);
   }
-  if (motion_.nhcApplies()) {
+  if (nhc) {
     // The mean rate over the window: a single noisy sample in the lever-arm term would bias the
     // extrinsic (errors in variables).
     update(NhcModel(gyro.rate, options_.models.nhc_sigma),
@@ -227,10 +282,16 @@ CalibrationEstimate CalibrationFilter::calibration() const {
   return e;
 }
 
-TruthSample CalibrationFilter::trajectorySample() const {
-  const NavState x = nav();
+TruthSample CalibrationFilter::trajectorySample(double t) {
+  NavState x = nav();
+  t = std::min(t, imu_.back().t);
+  if (t > t_) {
+    x = pendingTo(t).predict(x);  // mean prediction; the covariance moves at the next update
+  } else {
+    t = t_;
+  }
   TruthSample s;
-  s.t = t_;
+  s.t = t;
   const Eigen::Vector3d p_e = frame_.ecefFromEnu(x.p_n_b);
   const Geodetic g = geodeticFromEcef(p_e);
   s.lat_deg = g.lat * kRadToDeg;

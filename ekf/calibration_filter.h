@@ -11,6 +11,7 @@
 #include "common/calibration/calibration_run.h"
 #include "common/calibration/initial_state.h"
 #include "common/geodesy/wgs84.h"
+#include "common/imu/imu_preintegration.h"
 #include "common/imu/imu_sample.h"
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odom_sample.h"
@@ -56,8 +57,9 @@ class CalibrationFilter {
   /// consider states (p_b_m.z when held) are not corrected. Models that take a raw gyro sample
   /// pass its per-axis variance: the sample enters as (gyro - b_g), so its noise reaches the
   /// residual through the b_g columns of H and is added to R as gyro_variance H_bg H_bg^T.
+  /// iterations > 1: iterated EKF, relinearized at each new estimate.
   UpdateResult update(const MeasurementModel& model, const std::vector<std::string>& names,
-                      double chi2_gate, double gyro_variance = 0.0);
+                      double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
 
   /// Raw gyro at t, linearly interpolated, and the per-axis variance of its white noise.
   struct Gyro {
@@ -70,12 +72,17 @@ class CalibrationFilter {
 
   NavState nav() const;
   CalibrationEstimate calibration() const;
-  /// The navigation state as a truth.csv row (IMU origin, ENU velocity and attitude).
-  TruthSample trajectorySample() const;
+  /// The navigation state predicted to t >= time() (mean only) as a truth.csv row: IMU origin,
+  /// ENU velocity and attitude.
+  TruthSample trajectorySample(double t);
   bool standingStill() const { return s_.has(ekf_var::kHeadingClone); }
 
  private:
   std::vector<int> heldIndices() const;
+  void feedMotion(double t);  // bias-compensated IMU samples up to t into the motion detector
+  /// The IMU preintegrated from time() to t; each sample is integrated once however often it
+  /// is asked for (trajectory output, then the next update).
+  const ImuPreintegration& pendingTo(double t);
   void restartOdometerInterval(const OdomSample& sample);
 
   CalibrationOptions options_;
@@ -85,6 +92,9 @@ class CalibrationFilter {
   StateRegistry s_;
   MotionDetector motion_;
   double t_ = 0.0;
+  double motion_fed_t_ = 0.0;
+  std::unique_ptr<ImuPreintegration> pending_;
+  double pending_t_ = 0.0;
   double chi2_odometer_ = 0.0;
   std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
   OdomSample last_odo_;

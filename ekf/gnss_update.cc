@@ -1,5 +1,6 @@
 #include "ekf/gnss_update.h"
 
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -192,18 +193,19 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   StateRegistry& s = f.state();
   const long na = static_cast<long>(phase_rows.size());
   if (na < options_.lambda.min_fixed) return;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(na, s.dim());
+  Eigen::SparseMatrix<double> A(na, s.dim());
   Eigen::VectorXd a(na);
   std::vector<double> el;
   for (long k = 0; k < na; ++k) {
     const DdObservation& o = phase_rows[static_cast<size_t>(k)];
     const std::string ns = ambiguityName(o.sat, o.band), nr = ambiguityName(o.ref, o.band);
-    A(k, s.offset(ns)) = 1.0;
-    A(k, s.offset(nr)) = -1.0;
+    A.insert(k, s.offset(ns)) = 1.0;
+    A.insert(k, s.offset(nr)) = -1.0;
     a[k] = s.value(ns)[0] - s.value(nr)[0];
     el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
   }
-  const Eigen::MatrixXd Qa = A * s.covariance() * A.transpose();
+  const Eigen::MatrixXd PAt = s.covariance() * A.transpose();
+  const Eigen::MatrixXd Qa = A * PAt;
   std::vector<int> drop(static_cast<size_t>(na));
   std::iota(drop.begin(), drop.end(), 0);
   std::sort(drop.begin(), drop.end(),
@@ -217,11 +219,20 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   rep.ratio = fix.ratio;
   if (!fix.fixed) return;
 
+  // Fixes already held (their DD variance is at the constraint's level) need no new update.
   std::vector<DdAmbiguityFix> fixes;
+  const double held_variance = 4.0 * options_.fix_sigma_cycles * options_.fix_sigma_cycles;
   for (size_t k = 0; k < fix.indices.size(); ++k) {
-    const DdObservation& o = phase_rows[static_cast<size_t>(fix.indices[k])];
+    const int i = fix.indices[k];
+    if (Qa(i, i) < held_variance) continue;
+    const DdObservation& o = phase_rows[static_cast<size_t>(i)];
     fixes.push_back({ambiguityName(o.sat, o.band), ambiguityName(o.ref, o.band),
                      fix.values[static_cast<long>(k)]});
+  }
+  rep.fixed_ambiguities = static_cast<int>(fix.indices.size());
+  if (fixes.empty()) {
+    rep.fixed = true;
+    return;
   }
   // Apply the fixes, then keep them only if the fixed solution fits every DD phase row.
   const StateRegistry saved = s;
@@ -239,7 +250,6 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
     return;
   }
   rep.fixed = true;
-  rep.fixed_ambiguities = static_cast<int>(fixes.size());
 }
 
 }  // namespace giocal

@@ -93,6 +93,19 @@ void StateRegistry::correct(const Eigen::VectorXd& dx) {
   }
 }
 
+Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
+  Eigen::VectorXd dx(dim());
+  for (const auto& [name, v] : vars_) {
+    const Eigen::VectorXd& b = base.value(name);
+    if (v.block.kind == BlockKind::kRotation) {
+      dx.segment<3>(v.offset) = boxMinus(quatFromWxyz(v.value.data()), quatFromWxyz(b.data()));
+    } else {
+      dx.segment(v.offset, v.block.size) = v.value - b;
+    }
+  }
+  return dx;
+}
+
 std::vector<BlockBinding> StateRegistry::bind(const std::vector<std::string>& names) const {
   std::vector<BlockBinding> out;
   for (const std::string& n : names) {

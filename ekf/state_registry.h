@@ -38,6 +38,8 @@ class StateRegistry {
 
   /// Applies an error-state correction: vectors add, rotations multiply on the right by Exp(d).
   void correct(const Eigen::VectorXd& dx);
+  /// The correction that takes `base` (same variables) to this state: this = base (+) dx.
+  Eigen::VectorXd minus(const StateRegistry& base) const;
 
   /// Bindings of a model's blocks to the variables `names[k]` (throws for an unknown name).
   std::vector<BlockBinding> bind(const std::vector<std::string>& names) const;

@@ -45,6 +45,7 @@ struct CalibrationOptions {
   bool hold_p_b_m_z = true;          // keep p_b_m.z at its prior (unobservable in planar motion)
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
+  int odometer_iterations = 1;       // >1: iterated EKF update of the odometer interval
   double max_odometer_gap_s = 0.5;   // a longer gap restarts the odometer interval [s]
   double output_rate_hz = 10.0;      // trajectory.csv rate [Hz]
   double max_imu_gap_s = 0.5;        // longer IMU gaps are reported (and bridged) [s]

@@ -125,6 +125,7 @@ void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
   }
   j["initialization"] = run.initialization;
   j["counters"] = run.counters;
+  j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;
   if (truth && !run.history.empty()) {
     const CalibrationError err = calibrationError(run.history.back(), *truth);

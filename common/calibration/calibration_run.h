@@ -41,7 +41,8 @@ struct CalibrationRun {
   int fixed_epochs = 0;        // of those, epochs with validated ambiguity fixes
   std::string p_b_m_z;         // how the unobservable p_b_m.z was treated
   std::map<std::string, double> initialization;  // static window, heading baseline and sigma
-  std::map<std::string, long> counters;  // rejected rows, outliers, resets, ...
+  std::map<std::string, long> counters;
+  std::map<std::string, double> timing;  // wall time of parts of the run [s]  // rejected rows, outliers, resets, ...
   std::vector<std::string> warnings;     // bad data met on the way, divergence
 
   double fixRate() const { return gnss_epochs ? double(fixed_epochs) / gnss_epochs : 0.0; }
