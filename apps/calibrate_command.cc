@@ -44,8 +44,7 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
   out << "  p_b_m.z: " << run.p_b_m_z << "\n";
   out << std::setprecision(1) << "  GNSS epochs " << run.gnss_epochs << ", fix rate "
       << 100.0 * run.fixRate() << " %; " << std::setprecision(3) << run.wall_time_s << " s for "
-      << std::setprecision(1) << run.data_duration_s << " s of data ("
-      << std::setprecision(0)
+      << std::setprecision(1) << run.data_duration_s << " s of data (" << std::setprecision(0)
       << (run.wall_time_s > 0 ? run.data_duration_s / run.wall_time_s : 0.0)
       << "x real time), files read in " << std::setprecision(3) << run.load_time_s << " s\n";
   for (const std::string& w : run.warnings) out << "  warning: " << w << "\n";

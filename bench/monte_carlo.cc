@@ -45,10 +45,14 @@ int main(int argc, char** argv) {
   std::string config;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
-    if (k == "--preset") preset = v;
-    else if (k == "--seeds") seeds = std::stoi(v);
-    else if (k == "--first") first = std::stoi(v);
-    else if (k == "--config") config = v;
+    if (k == "--preset")
+      preset = v;
+    else if (k == "--seeds")
+      seeds = std::stoi(v);
+    else if (k == "--first")
+      first = std::stoi(v);
+    else if (k == "--config")
+      config = v;
     else {
       std::cerr << "unknown option " << k << "\n";
       return 2;
@@ -59,11 +63,12 @@ int main(int argc, char** argv) {
   const std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
   std::map<std::string, Tally> tally;
   const std::string work = std::filesystem::temp_directory_path() / "giocal_monte_carlo";
-  std::printf("%-6s %-4s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m",
-              "Y m", "roll", "pitch", "yaw", "s_v", "s_w", "NEES7", "fix%", "wall s");
+  std::printf("%-6s %-4s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
+              "roll", "pitch", "yaw", "s_v", "s_w", "NEES7", "fix%", "wall s");
   for (int seed = first; seed < first + seeds; ++seed) {
     std::filesystem::remove_all(work);
-    const giocal::sim::SimulatedLogs logs = giocal::sim::simulate(cfg, static_cast<std::uint64_t>(seed));
+    const giocal::sim::SimulatedLogs logs =
+        giocal::sim::simulate(cfg, static_cast<std::uint64_t>(seed));
     giocal::sim::writeDataset(logs, work);
     const giocal::CalibrationInputs in = giocal::loadCalibrationInputs(work);
     for (const auto& [name, run] : estimators) {
@@ -76,17 +81,22 @@ int main(int argc, char** argv) {
         ++t.failures;
         continue;
       }
-      const giocal::CalibrationError e = giocal::calibrationError(r.history.back(), in.truth->calib);
-      const double v[7] = {e.p_b_m.x(), e.p_b_m.y(), e.rpy.x() * giocal::kRadToDeg,
-                           e.rpy.y() * giocal::kRadToDeg, e.rpy.z() * giocal::kRadToDeg,
-                           e.s_v, e.s_w};
+      const giocal::CalibrationError e =
+          giocal::calibrationError(r.history.back(), in.truth->calib);
+      const double v[7] = {e.p_b_m.x(),
+                           e.p_b_m.y(),
+                           e.rpy.x() * giocal::kRadToDeg,
+                           e.rpy.y() * giocal::kRadToDeg,
+                           e.rpy.z() * giocal::kRadToDeg,
+                           e.s_v,
+                           e.s_w};
       for (int k = 0; k < 7; ++k) t.abs[k].push_back(std::abs(v[k]));
       t.nees.push_back(e.nees7);
       t.wall.push_back(r.wall_time_s);
       t.rtf.push_back(r.data_duration_s / r.wall_time_s);
       t.fix.push_back(100.0 * r.fixRate());
-      std::printf("%-6d %-4s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n",
-                  seed, name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], e.nees7,
+      std::printf("%-6d %-4s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n", seed,
+                  name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], e.nees7,
                   100.0 * r.fixRate(), r.wall_time_s);
     }
   }
@@ -94,8 +104,8 @@ int main(int argc, char** argv) {
   std::printf("\nMean absolute calibration errors over %d seeds (%s)\n", seeds, preset.c_str());
   std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",
               "roll deg", "pitch", "yaw", "V scale", "W scale", "NEES7", "fix %", "x real");
-  std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.1e %10.1e |\n", "paper TC", 0.06, 0.05,
-              0.24, 0.05, 3.29, 6.0e-4, 3.1e-3);
+  std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.1e %10.1e |\n", "paper TC", 0.06, 0.05, 0.24,
+              0.05, 3.29, 6.0e-4, 3.1e-3);
   for (const auto& [name, t] : tally) {
     std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e | %8.2f %8.1f %9.0f\n",
                 ("giocal " + name).c_str(), mean(t.abs[0]), mean(t.abs[1]), mean(t.abs[2]),
@@ -103,10 +113,12 @@ int main(int argc, char** argv) {
                 mean(t.fix), mean(t.rtf));
     if (t.failures) std::printf("  %s failed on %d seeds\n", name.c_str(), t.failures);
   }
-  std::printf("NEES7: mean over seeds of the normalized error of the 7 observable states (X, Y, "
-              "roll, pitch, yaw, s_v, s_w); consistent near 7 (95%% of single runs below 14.1).\n");
+  std::printf(
+      "NEES7: mean over seeds of the normalized error of the 7 observable states (X, Y, "
+      "roll, pitch, yaw, s_v, s_w); consistent near 7 (95%% of single runs below 14.1).\n");
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
-  std::printf("peak memory of this process: %.1f MiB\n", static_cast<double>(ru.ru_maxrss) / 1024.0);
+  std::printf("peak memory of this process: %.1f MiB\n",
+              static_cast<double>(ru.ru_maxrss) / 1024.0);
   return 0;
 }

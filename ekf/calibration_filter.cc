@@ -116,8 +116,8 @@ CalibrationFilter::Gyro CalibrationFilter::gyroAt(double t) const {
   const double density = dataset_.imu_noise.gyro_noise_density;
   if (it == imu_.begin() || it == imu_.end()) {
     const ImuSample& s = it == imu_.end() ? imu_.back() : imu_.front();
-    const double dt = imu_.size() > 1 ? (imu_.back().t - imu_.front().t) / double(imu_.size() - 1)
-                                      : 0.01;
+    const double dt =
+        imu_.size() > 1 ? (imu_.back().t - imu_.front().t) / double(imu_.size() - 1) : 0.01;
     return {s.gyro, density * density / dt};
   }
   const ImuSample& b = *it;
@@ -151,8 +151,8 @@ void CalibrationFilter::feedMotion(double t) {
 const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
   if (!pending_) {
     const NavState x = navState(s_);
-    pending_ = std::make_unique<ImuPreintegration>(
-        dataset_.imu_noise, frame_.gravity_n(x.p_n_b), frame_.omega_ie_n(), x.b_a, x.b_g);
+    pending_ = std::make_unique<ImuPreintegration>(dataset_.imu_noise, frame_.gravity_n(x.p_n_b),
+                                                   frame_.omega_ie_n(), x.b_a, x.b_g);
     pending_t_ = t_;
   }
   if (t > pending_t_) {
@@ -225,11 +225,12 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
     }
     last_odo_ = sample;
     if (interval_done) {
-      const UpdateResult r = update(
-          OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))),
-          {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
-           block::kPbm, block::kQbm},
-          chi2_odometer_, 0.0, options_.odometer_iterations);
+      const UpdateResult r =
+          update(OdometerPreintegrationModel(
+                     std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))),
+                 {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
+                  block::kPbm, block::kQbm},
+                 chi2_odometer_, 0.0, options_.odometer_iterations);
       accepted = r.accepted;
       restartOdometerInterval(sample);
     }

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -30,16 +30,20 @@ std::string at(double t) {
   return s.str();
 }
 
-/// The longest time between IMU samples over (t0, t1].
-double largestGap(const std::vector<ImuSample>& imu, double t0, double t1) {
+/// The longest interval between consecutive IMU samples among those overlapping (t0, t1], and
+/// where it starts.
+std::pair<double, double> largestGap(const std::vector<ImuSample>& imu, double t0, double t1) {
   auto it = std::upper_bound(imu.begin(), imu.end(), t0,
                              [](double v, const ImuSample& s) { return v < s.t; });
-  double gap = 0.0, prev = t0;
-  for (; it != imu.end() && it->t <= t1; ++it) {
-    gap = std::max(gap, it->t - prev);
-    prev = it->t;
+  if (it != imu.begin()) --it;
+  double gap = 0.0, start = t0;
+  for (; it + 1 != imu.end() && it->t < t1; ++it) {
+    if ((it + 1)->t - it->t > gap) {
+      gap = (it + 1)->t - it->t;
+      start = it->t;
+    }
   }
-  return std::max(gap, t1 - prev);
+  return {gap, start};
 }
 
 bool finiteState(const StateRegistry& s) {
@@ -75,8 +79,7 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
 
   std::string why;
   const auto i0 = std::chrono::steady_clock::now();
-  auto init =
-      findInitialState(in, options, dataset.initial_calibration, in.imu.front().t, &why);
+  auto init = findInitialState(in, options, dataset.initial_calibration, in.imu.front().t, &why);
   if (!init) throw std::runtime_error("could not initialize: " + why);
   run.timing["initialization_s"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - i0).count();
@@ -92,12 +95,12 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
   size_t k_odo = 0, k_gnss = 0, k_base = 0;
   double next_output = init->x.t;
   long odo_rejected_in_row = 0;
-  double t_prev_event = init->x.t;
+  double t_prev_event = init->x.t, last_gap_start = NAN;
   double gnss_time = 0.0;
   auto& counters = run.counters;
-  for (const char* c : {"odometer_updates", "odometer_rejected", "dd_rows", "gnss_rows_rejected",
-                        "code_outliers", "ambiguity_resets", "gnss_without_base",
-                        "reinitializations"}) {
+  for (const char* c :
+       {"odometer_updates", "odometer_rejected", "dd_rows", "gnss_rows_rejected", "code_outliers",
+        "ambiguity_resets", "gnss_without_base", "reinitializations", "imu_gaps"}) {
     counters[c] = 0;
   }
 
@@ -109,10 +112,12 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
     const double t_next = std::min(t_odo, t_gnss);
     if (!(t_next <= t_end)) break;
 
-    const double gap = largestGap(in.imu, t_prev_event, t_next);
+    const auto [gap, gap_start] = largestGap(in.imu, t_prev_event, t_next);
     t_prev_event = t_next;
-    if (gap > options.max_imu_gap_s) {
-      warn(run, "IMU gap of " + at(gap) + " s before t=" + at(t_next) +
+    if (gap > options.max_imu_gap_s && gap_start != last_gap_start) {
+      last_gap_start = gap_start;
+      ++counters["imu_gaps"];
+      warn(run, "IMU gap of " + at(gap) + " s after t=" + at(gap_start) +
                     ": bridged by interpolation, the covariance grows with it");
     }
     if (t_odo <= t_gnss) {
@@ -176,8 +181,7 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
   if (run.history.empty() || run.history.back().t < filter->time()) {
     run.history.push_back(filter->calibration());
   }
-  run.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.timing["gnss_updates_s"] = gnss_time;
   return run;
 }

@@ -66,8 +66,7 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
   const std::set<CodeOutlierCheck::Key> bad_base = base_check_.check(base);
 
   const NavState x = f.nav();
-  const Eigen::Vector3d ant_e =
-      f.frame().ecefFromEnu(x.p_n_b + x.q_n_b * s.value(ekf_var::kPbg));
+  const Eigen::Vector3d ant_e = f.frame().ecefFromEnu(x.p_n_b + x.q_n_b * s.value(ekf_var::kPbg));
   const DdEpoch ep = builder_.build(rover, base, ant_e);
 
   // SD ambiguities: random walk, restart after slips, add new, drop unseen.
@@ -154,7 +153,8 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
 
 void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
                                const Eigen::Vector3d& ant_e, double dt, GnssEpochReport& rep) {
-  std::vector<DopplerObservation> obs = dopplerObservations(rover, orbits_, ant_e, options_.doppler);
+  std::vector<DopplerObservation> obs =
+      dopplerObservations(rover, orbits_, ant_e, options_.doppler);
   if (obs.size() < 4) return;
   StateRegistry& s = f.state();
   const CalibrationFilter::Gyro gyro = f.gyroAt(rover.t);
@@ -167,8 +167,8 @@ void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
           Eigen::MatrixXd::Constant(1, 1, 1.0));
     const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
     const MeasurementRows lin = linearize(m, s.bind(names), s.dim());
-    s.value(ekf_var::kClockDrift)[0] =
-        -median(std::vector<double>(lin.residual.data(), lin.residual.data() + lin.residual.size()));
+    s.value(ekf_var::kClockDrift)[0] = -median(
+        std::vector<double>(lin.residual.data(), lin.residual.data() + lin.residual.size()));
   } else {
     const int i = s.offset(ekf_var::kClockDrift);
     s.covariance()(i, i) += options_.clock_drift_noise * options_.clock_drift_noise * dt;

@@ -58,7 +58,8 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
   }
   for (int a = 0; a < 15; ++a)
     for (int b = 0; b < 15; ++b)
-      P(idx[static_cast<size_t>(a)], idx[static_cast<size_t>(b)]) = 0.5 * (Pnn_new(a, b) + Pnn_new(b, a));
+      P(idx[static_cast<size_t>(a)], idx[static_cast<size_t>(b)]) =
+          0.5 * (Pnn_new(a, b) + Pnn_new(b, a));
   setNavState(s, xj);
 }
 

@@ -37,8 +37,7 @@ CalibrationOptions readCalibrationOptions(const std::string& path) {
   o.p_b_g_sigma = y.numberOr(s + "p_b_g_sigma", o.p_b_g_sigma, 1e-6, 10.0);
   o.hold_p_b_m_z = flag("hold_p_b_m_z", o.hold_p_b_m_z);
   o.clock_drift_noise = y.numberOr(s + "clock_drift_noise", o.clock_drift_noise, 0.0, 1e3);
-  o.odometer_interval_s =
-      y.numberOr(s + "odometer_interval_s", o.odometer_interval_s, 0.0, 60.0);
+  o.odometer_interval_s = y.numberOr(s + "odometer_interval_s", o.odometer_interval_s, 0.0, 60.0);
   o.odometer_iterations =
       static_cast<int>(y.numberOr(s + "odometer_iterations", o.odometer_iterations, 1, 20));
   o.max_odometer_gap_s = y.numberOr(s + "max_odometer_gap_s", o.max_odometer_gap_s, 1e-3, 60.0);

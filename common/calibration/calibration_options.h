@@ -16,19 +16,19 @@ namespace giocal {
 /// heading from the GNSS displacement of the first straight-ish drive.
 struct InitOptions {
   double static_speed = 0.01;  // mean odometer speed over the motion window below this: still [m/s]
-  double min_static_s = 2.0;            // shortest static window used for alignment [s]
-  double min_distance = 1.0;            // antenna travel that gives the heading [m]
-  double max_heading_sigma_deg = 3.0;   // the displacement must fix the heading this well [deg]
-  double max_turn_deg = 20.0;           // yaw change allowed over that travel [deg]
-  double velocity_sigma = 0.05;         // initial velocity 1-sigma [m/s]
-  double attitude_sigma_deg = 1.0;      // roll and pitch 1-sigma without a static window [deg]
+  double min_static_s = 2.0;   // shortest static window used for alignment [s]
+  double min_distance = 1.0;   // antenna travel that gives the heading [m]
+  double max_heading_sigma_deg = 3.0;  // the displacement must fix the heading this well [deg]
+  double max_turn_deg = 20.0;          // yaw change allowed over that travel [deg]
+  double velocity_sigma = 0.05;        // initial velocity 1-sigma [m/s]
+  double attitude_sigma_deg = 1.0;     // roll and pitch 1-sigma without a static window [deg]
 };
 
 struct CalibrationOptions {
-  ModelOptions models;           // motion detectors, ZUPT and NHC noise
-  DdOptions dd;                  // "rtk" section: mask, frequencies, systems, code/phase noise
-  LambdaOptions lambda;          // "rtk" section: ratio test, partial AR
-  double ambiguity_noise = 1e-4; // "rtk" section: SD ambiguity random walk [cycles/sqrt(s)]
+  ModelOptions models;            // motion detectors, ZUPT and NHC noise
+  DdOptions dd;                   // "rtk" section: mask, frequencies, systems, code/phase noise
+  LambdaOptions lambda;           // "rtk" section: ratio test, partial AR
+  double ambiguity_noise = 1e-4;  // "rtk" section: SD ambiguity random walk [cycles/sqrt(s)]
   DopplerOptions doppler;
   CodeOutlierOptions code_outliers;
   InitOptions init;

@@ -38,8 +38,8 @@ Eigen::Matrix3d rpyTangentJacobian(const Eigen::Quaterniond& q) {
 
 Eigen::Vector3d CalibrationEstimate::rpySigma() const {
   const Eigen::Matrix3d J = rpyTangentJacobian(calib.q_b_m);
-  const Eigen::Matrix3d C = J * cov.block<3, 3>(calib_index::kTheta, calib_index::kTheta) *
-                            J.transpose();
+  const Eigen::Matrix3d C =
+      J * cov.block<3, 3>(calib_index::kTheta, calib_index::kTheta) * J.transpose();
   return C.diagonal().cwiseMax(0.0).cwiseSqrt();
 }
 
@@ -52,8 +52,8 @@ CalibrationError calibrationError(const CalibrationEstimate& e, const OdometerCa
   const Eigen::Vector3d b = rpyFromRotation(truth.q_b_m.toRotationMatrix());
   for (int k = 0; k < 3; ++k) err.rpy[k] = std::remainder(a[k] - b[k], 2.0 * M_PI);
   err.tangent << err.s_v, err.s_w, err.p_b_m, boxMinus(e.calib.q_b_m, truth.q_b_m);
-  const int idx[7] = {calib_index::kSv,        calib_index::kSw,        calib_index::kP,
-                      calib_index::kP + 1,     calib_index::kTheta,     calib_index::kTheta + 1,
+  const int idx[7] = {calib_index::kSv,       calib_index::kSw,    calib_index::kP,
+                      calib_index::kP + 1,    calib_index::kTheta, calib_index::kTheta + 1,
                       calib_index::kTheta + 2};
   Eigen::Matrix<double, 7, 7> C;
   Eigen::Matrix<double, 7, 1> d;

@@ -34,16 +34,17 @@ struct CalibrationRun {
   std::vector<CalibrationEstimate> history;
   std::vector<TruthSample> trajectory;
   double data_duration_s = 0.0;
-  double wall_time_s = 0.0;  // estimator time, reading the files excluded
-  double load_time_s = 0.0;  // reading and checking the dataset files
-  double t_initialized = 0.0;  // time of the first estimated state
-  int gnss_epochs = 0;         // rover epochs used with a base epoch
-  int fixed_epochs = 0;        // of those, epochs with validated ambiguity fixes
-  std::string p_b_m_z;         // how the unobservable p_b_m.z was treated
+  double wall_time_s = 0.0;                      // estimator time, reading the files excluded
+  double load_time_s = 0.0;                      // reading and checking the dataset files
+  double t_initialized = 0.0;                    // time of the first estimated state
+  int gnss_epochs = 0;                           // rover epochs used with a base epoch
+  int fixed_epochs = 0;                          // of those, epochs with validated ambiguity fixes
+  std::string p_b_m_z;                           // how the unobservable p_b_m.z was treated
   std::map<std::string, double> initialization;  // static window, heading baseline and sigma
   std::map<std::string, long> counters;
-  std::map<std::string, double> timing;  // wall time of parts of the run [s]  // rejected rows, outliers, resets, ...
-  std::vector<std::string> warnings;     // bad data met on the way, divergence
+  std::map<std::string, double>
+      timing;  // wall time of parts of the run [s]  // rejected rows, outliers, resets, ...
+  std::vector<std::string> warnings;  // bad data met on the way, divergence
 
   double fixRate() const { return gnss_epochs ? double(fixed_epochs) / gnss_epochs : 0.0; }
 };

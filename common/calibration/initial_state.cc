@@ -90,7 +90,8 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   t_from = std::max(t_from, in.imu.front().t);
 
   // Roll, pitch and gyro bias: from the first static window, else the first second in motion.
-  const auto [ts0, ts1] = firstStaticRun(in.odom, t_from, io.static_speed, options.models.motion.window_s);
+  const auto [ts0, ts1] =
+      firstStaticRun(in.odom, t_from, io.static_speed, options.models.motion.window_s);
   const bool have_static = !std::isnan(ts0) && ts1 - ts0 >= io.min_static_s && ts0 - t_from < 1.0;
   std::vector<ImuSample> window =
       have_static ? imuBetween(in.imu, ts0, ts1) : imuBetween(in.imu, t_from, t_from + 1.0);
@@ -190,7 +191,8 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     const Eigen::Matrix3d R_n_b = Rz * R0;
     if (have_static) {
       // Again with the heading known, for the Earth rate's share of the gyro mean.
-      const Eigen::Matrix3d R_static = Rz * rotationFromRpy(Eigen::Vector3d(align.roll, align.pitch, 0.0));
+      const Eigen::Matrix3d R_static =
+          Rz * rotationFromRpy(Eigen::Vector3d(align.roll, align.pitch, 0.0));
       const double yaw_static = rpyFromRotation(R_static).z();
       align = alignStatic(window, yaw_static, frame.omega_ie_n(), noise.gyro_noise_density,
                           noise.accel_noise_density);
@@ -221,7 +223,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     const Eigen::Matrix<double, 8, 8> Pc = priorCalibrationCovariance(calib_prior);
     const Eigen::Matrix3d R_n_bs = s.x.q_n_b.toRotationMatrix();
     const Eigen::Matrix3d R_n_m = R_n_bs * R_b_m;
-    const Eigen::RowVector3d ez_m = R_n_m.row(2);  // d(yaw of m)/d theta_b_m
+    const Eigen::RowVector3d ez_m = R_n_m.row(2);            // d(yaw of m)/d theta_b_m
     const Eigen::Vector3d ez_b = R_n_bs.row(2).transpose();  // n's up axis in b
     const Eigen::Matrix3d Ptheta = Pc.block<3, 3>(calib_index::kTheta, calib_index::kTheta);
     const double var_yaw = sd_heading * sd_heading + ez_m * Ptheta * ez_m.transpose();
@@ -230,16 +232,16 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
                     : io.attitude_sigma_deg * kDegToRad;
     // Attitude tangent (b frame): tilt about n's east and north axes, yaw about up.
     const Eigen::Matrix3d R_b_n = R_n_bs.transpose();
-    Eigen::Matrix3d Patt = R_b_n * Eigen::Vector3d(tilt_sd * tilt_sd, tilt_sd * tilt_sd, var_yaw)
-                                       .asDiagonal() *
-                           R_b_n.transpose();
+    Eigen::Matrix3d Patt =
+        R_b_n * Eigen::Vector3d(tilt_sd * tilt_sd, tilt_sd * tilt_sd, var_yaw).asDiagonal() *
+        R_b_n.transpose();
     const double lever_sd = d.p_b_g.norm() * std::sqrt(var_yaw);
     const double sd_pos = std::hypot(at_state.sd_h, lever_sd) + 0.01;
     const double sd_vel = anchor_static ? options.models.zupt_sigma
                                         : io.velocity_sigma + std::abs(v_odo) * std::sqrt(var_yaw);
-    const Eigen::Vector3d sd_bg = have_static
-                                      ? Eigen::Vector3d(align.sd_b_g.cwiseMax(1e-5))
-                                      : Eigen::Vector3d(Eigen::Vector3d::Constant(noise.gyro_bias_sigma));
+    const Eigen::Vector3d sd_bg =
+        have_static ? Eigen::Vector3d(align.sd_b_g.cwiseMax(1e-5))
+                    : Eigen::Vector3d(Eigen::Vector3d::Constant(noise.gyro_bias_sigma));
     auto& P = s.P_nav;
     P.block<3, 3>(0, 0) = Eigen::Matrix3d::Identity() * sd_pos * sd_pos;
     P.block<3, 3>(3, 3) = Patt;

@@ -13,10 +13,10 @@
 namespace giocal {
 
 struct CodeOutlierOptions {
-  double threshold_m = 3.0;   // largest accepted departure from the Doppler prediction [m]
-  double max_gap_s = 5.0;     // a longer gap restarts a satellite's track
-  int min_satellites = 4;     // fewer tracked signals: no decision (all accepted)
-  int max_consecutive = 3;    // after this many rejections in a row the track restarts
+  double threshold_m = 3.0;  // largest accepted departure from the Doppler prediction [m]
+  double max_gap_s = 5.0;    // a longer gap restarts a satellite's track
+  int min_satellites = 4;    // fewer tracked signals: no decision (all accepted)
+  int max_consecutive = 3;   // after this many rejections in a row the track restarts
 };
 
 class CodeOutlierCheck {

@@ -15,10 +15,10 @@ namespace giocal {
 struct DopplerObservation {
   SatId sat;
   Eigen::Vector3d los_e = Eigen::Vector3d::Zero();  // unit vector from the rover to the satellite
-  double satellite_term = 0.0;  // los . v_sat - c dts_dot + Sagnac rate [m/s]
-  double range_rate = 0.0;      // observed: -lambda D [m/s]
-  double variance = 0.0;        // [m^2/s^2]
-  double el = 0.0;              // [rad]
+  double satellite_term = 0.0;                      // los . v_sat - c dts_dot + Sagnac rate [m/s]
+  double range_rate = 0.0;                          // observed: -lambda D [m/s]
+  double variance = 0.0;                            // [m^2/s^2]
+  double el = 0.0;                                  // [rad]
 };
 
 struct DopplerOptions {

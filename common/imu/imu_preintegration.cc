@@ -1,7 +1,6 @@
 #include "common/imu/imu_preintegration.h"
 
 #include <algorithm>
-
 #include <stdexcept>
 
 namespace giocal {

@@ -13,7 +13,8 @@ AmbiguityFixModel::AmbiguityFixModel(std::vector<DdAmbiguityFix> fixes, double s
     blocks_.push_back(vectorBlock(name, 1));
     return static_cast<int>(blocks_.size()) - 1;
   };
-  for (const DdAmbiguityFix& f : fixes_) index_.push_back({blockOf(f.sat_block), blockOf(f.ref_block)});
+  for (const DdAmbiguityFix& f : fixes_)
+    index_.push_back({blockOf(f.sat_block), blockOf(f.ref_block)});
 }
 
 void AmbiguityFixModel::evaluate(const double* const* params, Eigen::VectorXd& residual,

@@ -12,8 +12,8 @@ struct MotionDetectorOptions {
   double window_s = 1.0;                               // averaging window [s]
   double zupt_max_gyro = 0.05 * 0.017453292519943295;  // |mean w| below this is static [rad/s]
   double zupt_max_speed = 0.01;  // |mean odometer speed| below this is static, if any [m/s]
-  double nhc_max_gyro = 5.0 * 0.017453292519943295;    // |mean w| below this: not turning [rad/s]
-  double nhc_min_speed = 1.0;  // mean forward speed above this for NHC [m/s]
+  double nhc_max_gyro = 5.0 * 0.017453292519943295;  // |mean w| below this: not turning [rad/s]
+  double nhc_min_speed = 1.0;                        // mean forward speed above this for NHC [m/s]
   /// The gyro's white noise [rad/s/sqrt(Hz)]: a mean over the window cannot be told from zero
   /// below 4 density / sqrt(window), so the static threshold is at least that (0: paper's alone).
   double gyro_noise_density = 0.0;

@@ -1,7 +1,6 @@
 #include "common/odometer/odometer_preintegration.h"
 
 #include <algorithm>
-
 #include <stdexcept>
 
 namespace giocal {

@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+
 #include "common/math/rotation.h"
+#include "common/math/so3.h"
 #include "common/models/zupt_model.h"
 #include "ekf/kalman_update.h"
 #include "ekf/state_registry.h"
@@ -74,6 +77,58 @@ TEST(StateRegistry, ModelsBindByNameAndUpdate) {
   EXPECT_EQ(s.value("p_n_b"), Eigen::Vector3d::Zero());
   EXPECT_LT(s.marginal("v_n_b")(0, 0), 1.01e-4);
   EXPECT_THROW(s.bind({"b_g"}), std::out_of_range);
+}
+
+TEST(StateRegistry, CloneIsFullyCorrelatedAndMinusInvertsCorrect) {
+  StateRegistry s;
+  s.add(vectorBlock("p_n_b"), Eigen::Vector3d(1, 2, 3), spd(3, 1.0));
+  Eigen::VectorXd q(4);
+  quatToWxyz(Quat(expSO3(Vec3(0.1, -0.2, 0.3))), q.data());
+  s.add(rotationBlock("q_n_b"), q, spd(3, 0.01));
+  s.covariance() = spd(6, 0.1);
+  const Eigen::MatrixXd P = s.covariance();
+  s.clone("q_n_b", "q_n_b@still");
+  ASSERT_EQ(s.dim(), 9);
+  EXPECT_TRUE(s.value("q_n_b@still").isApprox(s.value("q_n_b")));
+  // The clone's rows and columns equal the original's: the difference has zero variance.
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(3, 9);
+  D.middleCols(3, 3).setIdentity();
+  D.middleCols(6, 3) = -Eigen::Matrix3d::Identity();
+  EXPECT_LT((D * s.covariance() * D.transpose()).norm(), 1e-15);
+  EXPECT_TRUE(s.covariance().topLeftCorner(6, 6).isApprox(P));
+  // minus() is the inverse of correct().
+  const StateRegistry base = s;
+  Eigen::VectorXd dx(9);
+  dx << 0.1, -0.2, 0.3, 0.01, 0.02, -0.03, -0.02, 0.01, 0.005;
+  s.correct(dx);
+  EXPECT_LT((s.minus(base) - dx).norm(), 1e-12);
+}
+
+TEST(KalmanUpdate, HeldStatesKeepValueAndVarianceAndTheUpdateIsJoseph) {
+  // A Schmidt (consider) update: the held state's gain is zero; the covariance must equal the
+  // dense Joseph form with that gain.
+  Eigen::MatrixXd P = spd(5, 0.2);
+  MeasurementRows rows;
+  rows.H = Eigen::MatrixXd::Random(2, 5);
+  rows.residual = Eigen::Vector2d(0.3, -0.1);
+  rows.R = Eigen::Matrix2d::Identity() * 0.05;
+  const Eigen::MatrixXd P0 = P;
+  const UpdateResult r = kalmanUpdate(P, rows, 1e9, {2});
+  ASSERT_TRUE(r.accepted);
+  EXPECT_EQ(r.dx[2], 0.0);
+  EXPECT_DOUBLE_EQ(P(2, 2), P0(2, 2));
+  const Eigen::MatrixXd S = rows.H * P0 * rows.H.transpose() + rows.R;
+  Eigen::MatrixXd K = P0 * rows.H.transpose() * S.inverse();
+  K.row(2).setZero();
+  const Eigen::MatrixXd IKH = Eigen::MatrixXd::Identity(5, 5) - K * rows.H;
+  const Eigen::MatrixXd joseph = IKH * P0 * IKH.transpose() + K * rows.R * K.transpose();
+  EXPECT_LT((P - joseph).norm(), 1e-12);
+  EXPECT_LT((r.dx - K * (-rows.residual)).norm(), 1e-12);
+  // Without held states it is the optimal update.
+  Eigen::MatrixXd P2 = P0;
+  kalmanUpdate(P2, rows, 1e9);
+  const Eigen::MatrixXd K0 = P0 * rows.H.transpose() * S.inverse();
+  EXPECT_LT((P2 - (P0 - K0 * S * K0.transpose())).norm(), 1e-12);
 }
 
 }  // namespace

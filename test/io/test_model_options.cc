@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
 #include "common/io/data_error.h"
 #include "common/io/model_options.h"
@@ -15,6 +16,7 @@ TEST(ModelOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_DOUBLE_EQ(shipped.motion.window_s, defaults.motion.window_s);
   EXPECT_NEAR(shipped.motion.zupt_max_gyro, defaults.motion.zupt_max_gyro, 1e-15);
   EXPECT_NEAR(shipped.motion.nhc_max_gyro, defaults.motion.nhc_max_gyro, 1e-15);
+  EXPECT_DOUBLE_EQ(shipped.motion.zupt_max_speed, defaults.motion.zupt_max_speed);
   EXPECT_DOUBLE_EQ(shipped.motion.nhc_min_speed, defaults.motion.nhc_min_speed);
   EXPECT_DOUBLE_EQ(shipped.zupt_sigma, defaults.zupt_sigma);
   EXPECT_DOUBLE_EQ(shipped.nhc_sigma, defaults.nhc_sigma);
@@ -42,6 +44,45 @@ TEST(RtkOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_EQ(readRtkOptions(dir.write("g.yaml", "rtk:\n  systems: G\n")).dd.systems,
             std::vector<GnssSystem>{GnssSystem::kGps});
   EXPECT_THROW(readRtkOptions(dir.write("r.yaml", "rtk:\n  systems: GR\n")), DataError);
+}
+
+TEST(CalibrationOptions, ShippedConfigEqualsTheDefaults) {
+  const CalibrationOptions c =
+      readCalibrationOptions(std::string(GIOCAL_SOURCE_DIR) + "/config/giocal.yaml");
+  const CalibrationOptions d;
+  EXPECT_EQ(c.ambiguity_resolution, d.ambiguity_resolution);
+  EXPECT_DOUBLE_EQ(c.fix_sigma_cycles, d.fix_sigma_cycles);
+  EXPECT_DOUBLE_EQ(c.max_fix_residual, d.max_fix_residual);
+  EXPECT_DOUBLE_EQ(c.innovation_gate, d.innovation_gate);
+  EXPECT_DOUBLE_EQ(c.chi2_probability, d.chi2_probability);
+  EXPECT_DOUBLE_EQ(c.heading_sigma_deg, d.heading_sigma_deg);
+  EXPECT_DOUBLE_EQ(c.doppler.noise.sigma_zenith, d.doppler.noise.sigma_zenith);
+  EXPECT_DOUBLE_EQ(c.code_outliers.threshold_m, d.code_outliers.threshold_m);
+  EXPECT_EQ(c.estimate_p_b_g, d.estimate_p_b_g);
+  EXPECT_DOUBLE_EQ(c.p_b_g_sigma, d.p_b_g_sigma);
+  EXPECT_EQ(c.hold_p_b_m_z, d.hold_p_b_m_z);
+  EXPECT_DOUBLE_EQ(c.clock_drift_noise, d.clock_drift_noise);
+  EXPECT_DOUBLE_EQ(c.odometer_interval_s, d.odometer_interval_s);
+  EXPECT_EQ(c.odometer_iterations, d.odometer_iterations);
+  EXPECT_DOUBLE_EQ(c.max_odometer_gap_s, d.max_odometer_gap_s);
+  EXPECT_DOUBLE_EQ(c.output_rate_hz, d.output_rate_hz);
+  EXPECT_DOUBLE_EQ(c.max_imu_gap_s, d.max_imu_gap_s);
+  EXPECT_DOUBLE_EQ(c.divergence_sigma, d.divergence_sigma);
+  EXPECT_DOUBLE_EQ(c.init.static_speed, d.init.static_speed);
+  EXPECT_DOUBLE_EQ(c.init.min_static_s, d.init.min_static_s);
+  EXPECT_DOUBLE_EQ(c.init.min_distance, d.init.min_distance);
+  EXPECT_DOUBLE_EQ(c.init.max_heading_sigma_deg, d.init.max_heading_sigma_deg);
+  EXPECT_DOUBLE_EQ(c.init.max_turn_deg, d.init.max_turn_deg);
+  EXPECT_DOUBLE_EQ(c.init.velocity_sigma, d.init.velocity_sigma);
+  EXPECT_DOUBLE_EQ(c.init.attitude_sigma_deg, d.init.attitude_sigma_deg);
+  // The rtk section's DD options reach the calibrators.
+  test::TempDir dir;
+  const CalibrationOptions g = readCalibrationOptions(
+      dir.write("g.yaml", "rtk:\n  systems: G\ncalibration:\n  ambiguity_resolution: 0\n"));
+  EXPECT_EQ(g.dd.systems, std::vector<GnssSystem>{GnssSystem::kGps});
+  EXPECT_FALSE(g.ambiguity_resolution);
+  EXPECT_THROW(readCalibrationOptions(dir.write("b.yaml", "calibration:\n  innovation_gate: 0\n")),
+               DataError);
 }
 
 TEST(ModelOptions, OverridesAndBadValues) {

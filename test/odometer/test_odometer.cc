@@ -177,8 +177,8 @@ PathCase makeCase(std::function<double(double)> speed, std::function<double(doub
   c.truth.q_b_m = Quat(rotationFromRpy(Vec3(2.0, -1.5, 4.0) * kDegToRad));
   const double dt = 0.02;  // 50 Hz instantaneous readings, the last one at T
   for (double t = 0.0; t < c.T + 1e-9; t += dt) {
-    c.samples.push_back({t, c.path.speed(t) / (1 + c.truth.s_v),
-                         c.path.yaw_rate(t) / (1 + c.truth.s_w)});
+    c.samples.push_back(
+        {t, c.path.speed(t) / (1 + c.truth.s_v), c.path.yaw_rate(t) / (1 + c.truth.s_w)});
   }
   c.poses = c.path.poses({0.0, c.T});
   return c;
