@@ -10,6 +10,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/math/rotation.h"
 #include "ekf/ekf_calibrator.h"
+#include "fgo/fgo_calibrator.h"
 
 namespace giocal {
 
@@ -68,10 +69,9 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   const CalibrationInputs inputs = loadCalibrationInputs(job.data);
   const double load_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (job.estimator == "fgo") {
-    throw std::runtime_error("--estimator fgo is not implemented yet (issue 6)");
-  }
-  CalibrationRun run = runEkfCalibration(inputs, options);
+  CalibrationRun run = job.estimator == "fgo"
+                           ? runFgoCalibration(inputs, options, readFgoOptions(job.config))
+                           : runEkfCalibration(inputs, options);
   run.load_time_s = load_s;
   const OdometerCalibration* truth = inputs.truth ? &inputs.truth->calib : nullptr;
   writeCalibrationRun(job.out, run, truth);

@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "common/gnss/spp.h"
+#include "common/imu/gyro_mean.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/math/rotation.h"
 #include "common/models/heading_change_model.h"
@@ -129,15 +130,8 @@ CalibrationFilter::Gyro CalibrationFilter::gyroAt(double t) const {
 }
 
 CalibrationFilter::Gyro CalibrationFilter::gyroMean(double t, double half_window) const {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int n = 0;
-  auto it = std::lower_bound(imu_.begin(), imu_.end(), t - half_window,
-                             [](const ImuSample& s, double x) { return s.t < x; });
-  for (; it != imu_.end() && it->t <= t + half_window; ++it, ++n) sum += it->gyro;
-  if (n < 2) return gyroAt(t);
-  const double dt = 2.0 * half_window / (n - 1);
-  const double density = dataset_.imu_noise.gyro_noise_density;
-  return {sum / n, density * density / dt / n};
+  const GyroMean m = meanGyro(imu_, t, half_window, dataset_.imu_noise.gyro_noise_density);
+  return {m.rate, m.variance};
 }
 
 void CalibrationFilter::feedMotion(double t) {

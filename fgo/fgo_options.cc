@@ -1,0 +1,19 @@
+#include "fgo/fgo_options.h"
+
+#include "common/io/yaml_fields.h"
+
+namespace giocal {
+
+FgoOptions readFgoOptions(const std::string& path) {
+  FgoOptions o;
+  if (path.empty()) return o;
+  const YamlFields y(path);
+  o.window = static_cast<int>(y.numberOr("fgo.window", o.window, 2, 1000));
+  o.max_iterations = static_cast<int>(y.numberOr("fgo.max_iterations", o.max_iterations, 1, 1000));
+  o.code_huber = y.numberOr("fgo.code_huber", o.code_huber, 0.0, 1e6);
+  o.rejection_sigma = y.numberOr("fgo.rejection_sigma", o.rejection_sigma, 1.0, 1e6);
+  o.max_rejections = static_cast<int>(y.numberOr("fgo.max_rejections", o.max_rejections, 0, 100));
+  return o;
+}
+
+}  // namespace giocal

@@ -1,0 +1,20 @@
+// FgoOptions: the factor graph's own options (window, solver, robust losses) with their defaults,
+// loadable from the "fgo" section of a giocal YAML config.
+#pragma once
+
+#include <string>
+
+namespace giocal {
+
+struct FgoOptions {
+  int window = 10;               // GNSS epochs kept in the window (chosen by measurement, README)
+  int max_iterations = 10;       // Ceres iterations per solve
+  double code_huber = 3.0;       // Huber threshold of DD code and Doppler factors [sigma]
+  double rejection_sigma = 5.0;  // rows with post-solve residuals beyond this are removed
+  int max_rejections = 5;        // per epoch
+};
+
+/// Throws DataError naming the file, line and problem; an empty path gives the defaults.
+FgoOptions readFgoOptions(const std::string& path);
+
+}  // namespace giocal

@@ -1,0 +1,266 @@
+#include "fgo/sliding_window.h"
+
+#include <ceres/ceres.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+#include "fgo/marginal_prior_model.h"
+#include "fgo/model_cost_function.h"
+#include "fgo/right_quaternion_manifold.h"
+
+namespace giocal {
+namespace {
+
+/// Whitening S with S^T S = C^-1 (lower Cholesky factor of C inverted).
+Eigen::MatrixXd whitener(const Eigen::MatrixXd& C) {
+  const Eigen::LLT<Eigen::MatrixXd> llt(C);
+  const Eigen::MatrixXd L = llt.matrixL();
+  return L.triangularView<Eigen::Lower>().solve(
+      Eigen::MatrixXd::Identity(C.rows(), C.cols()));
+}
+
+}  // namespace
+
+void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& value) {
+  if (has(block.name)) throw std::invalid_argument("window variable '" + block.name + "' exists");
+  if (value.size() != block.ambientSize()) {
+    throw std::invalid_argument("window variable '" + block.name + "': value size");
+  }
+  vars_[block.name] = {block, value, false, {}};
+}
+
+void SlidingWindow::removeVariable(const std::string& name) {
+  vars_.erase(name);
+  factors_.erase(std::remove_if(factors_.begin(), factors_.end(),
+                                [&](const Factor& f) {
+                                  return std::find(f.vars.begin(), f.vars.end(), name) !=
+                                         f.vars.end();
+                                }),
+                 factors_.end());
+}
+
+Eigen::VectorXd& SlidingWindow::value(const std::string& name) {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
+  return it->second.value;
+}
+
+const Eigen::VectorXd& SlidingWindow::value(const std::string& name) const {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
+  return it->second.value;
+}
+
+const StateBlock& SlidingWindow::block(const std::string& name) const {
+  const auto it = vars_.find(name);
+  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
+  return it->second.block;
+}
+
+void SlidingWindow::setConstant(const std::string& name, bool constant) {
+  value(name);
+  vars_[name].constant = constant;
+}
+
+void SlidingWindow::holdComponents(const std::string& name, const std::vector<int>& components) {
+  value(name);
+  vars_[name].held = components;
+}
+
+int SlidingWindow::removeFactors(const std::string& tag) {
+  const auto n = factors_.size();
+  factors_.erase(std::remove_if(factors_.begin(), factors_.end(),
+                                [&](const Factor& f) { return f.tag == tag; }),
+                 factors_.end());
+  return static_cast<int>(n - factors_.size());
+}
+
+std::vector<std::string> SlidingWindow::estimatedVariables() const {
+  std::set<std::string> used;
+  for (const Factor& f : factors_) used.insert(f.vars.begin(), f.vars.end());
+  std::vector<std::string> out;
+  for (const std::string& n : used) {
+    if (!vars_.at(n).constant) out.push_back(n);
+  }
+  return out;
+}
+
+SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations) {
+  ceres::Problem::Options po;
+  po.manifold_ownership = ceres::TAKE_OWNERSHIP;
+  ceres::Problem problem(po);
+  std::set<std::string> added;
+  for (const Factor& f : factors_) {
+    std::vector<double*> ptrs;
+    for (const std::string& n : f.vars) {
+      Variable& v = vars_.at(n);
+      ptrs.push_back(v.value.data());
+      if (added.insert(n).second) {
+        problem.AddParameterBlock(v.value.data(), static_cast<int>(v.value.size()));
+      }
+    }
+    ceres::LossFunction* loss = f.huber > 0.0 ? new ceres::HuberLoss(f.huber) : nullptr;
+    problem.AddResidualBlock(new ModelCostFunction(f.model), loss, ptrs);
+  }
+  for (const std::string& n : added) {
+    Variable& v = vars_.at(n);
+    if (v.block.kind == BlockKind::kRotation) {
+      problem.SetManifold(v.value.data(), new RightQuaternionManifold);
+    } else if (!v.held.empty() && static_cast<int>(v.held.size()) < v.block.size) {
+      problem.SetManifold(v.value.data(), new ceres::SubsetManifold(v.block.size, v.held));
+    }
+    if (v.constant || static_cast<int>(v.held.size()) == v.block.size) {
+      problem.SetParameterBlockConstant(v.value.data());
+    }
+  }
+  ceres::Solver::Options options;
+  options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
+  options.max_num_iterations = max_iterations;
+  options.num_threads = 1;
+  options.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, &problem, &summary);
+  // Rotations stay unit quaternions.
+  for (const std::string& n : added) {
+    Variable& v = vars_.at(n);
+    if (v.block.kind == BlockKind::kRotation) v.value.normalize();
+  }
+  return {summary.IsSolutionUsable(),
+          static_cast<int>(summary.iterations.size()), summary.final_cost};
+}
+
+void SlidingWindow::linearize(const std::vector<std::string>& order,
+                              const std::vector<const Factor*>& factors, Eigen::MatrixXd& H,
+                              Eigen::VectorXd& b) const {
+  std::map<std::string, int> offset;
+  int n = 0;
+  for (const std::string& name : order) {
+    offset[name] = n;
+    n += vars_.at(name).block.tangentSize();
+  }
+  H = Eigen::MatrixXd::Zero(n, n);
+  b = Eigen::VectorXd::Zero(n);
+  for (const Factor* f : factors) {
+    std::vector<const double*> params;
+    for (const std::string& v : f->vars) params.push_back(vars_.at(v).value.data());
+    Eigen::VectorXd r;
+    std::vector<Eigen::MatrixXd> J;
+    f->model->evaluate(params.data(), r, &J);
+    const Eigen::MatrixXd S = whitener(f->model->covariance());
+    const Eigen::VectorXd rw = S * r;
+    std::vector<std::pair<int, Eigen::MatrixXd>> cols;  // (offset, whitened Jacobian)
+    for (size_t k = 0; k < f->vars.size(); ++k) {
+      const auto it = offset.find(f->vars[k]);
+      if (it != offset.end()) cols.push_back({it->second, S * J[k]});
+    }
+    for (const auto& [oa, Ja] : cols) {
+      b.segment(oa, Ja.cols()) += Ja.transpose() * rw;
+      for (const auto& [ob, Jb] : cols) H.block(oa, ob, Ja.cols(), Jb.cols()) += Ja.transpose() * Jb;
+    }
+  }
+}
+
+Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
+  const std::vector<std::string> order = estimatedVariables();
+  std::vector<const Factor*> all;
+  for (const Factor& f : factors_) all.push_back(&f);
+  Eigen::MatrixXd H;
+  Eigen::VectorXd b;
+  linearize(order, all, H, b);
+  std::map<std::string, int> offset;
+  int n = 0;
+  for (const std::string& name : order) {
+    offset[name] = n;
+    n += vars_.at(name).block.tangentSize();
+  }
+  std::vector<int> idx;
+  for (const std::string& name : names) {
+    const auto it = offset.find(name);
+    if (it == offset.end()) throw std::out_of_range("no estimated window variable '" + name + "'");
+    for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
+  }
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, static_cast<long>(idx.size()));
+  for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
+  const Eigen::MatrixXd X = H.ldlt().solve(E);
+  Eigen::MatrixXd C(idx.size(), idx.size());
+  for (size_t r = 0; r < idx.size(); ++r) C.row(static_cast<long>(r)) = X.row(idx[r]);
+  return 0.5 * (C + C.transpose());
+}
+
+void SlidingWindow::marginalize(const std::vector<std::string>& names) {
+  const std::set<std::string> drop(names.begin(), names.end());
+  std::vector<const Factor*> touching;
+  std::set<std::string> keep_set;
+  for (const Factor& f : factors_) {
+    const bool t = std::any_of(f.vars.begin(), f.vars.end(),
+                               [&](const std::string& v) { return drop.count(v) != 0; });
+    if (!t) continue;
+    touching.push_back(&f);
+    for (const std::string& v : f.vars) {
+      if (!drop.count(v) && !vars_.at(v).constant) keep_set.insert(v);
+    }
+  }
+  std::vector<std::string> m_order, k_order(keep_set.begin(), keep_set.end());
+  for (const std::string& v : names) {
+    if (has(v) && !vars_.at(v).constant) m_order.push_back(v);
+  }
+  if (!touching.empty() && !k_order.empty()) {
+    std::vector<std::string> order = m_order;
+    order.insert(order.end(), k_order.begin(), k_order.end());
+    Eigen::MatrixXd H;
+    Eigen::VectorXd b;
+    linearize(order, touching, H, b);
+    long nm = 0;
+    for (const std::string& v : m_order) nm += vars_.at(v).block.tangentSize();
+    const long nk = H.rows() - nm;
+    // Schur complement with a pseudo-inverse of the marginalized block (it may be singular along
+    // directions nothing observed).
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(H.topLeftCorner(nm, nm));
+    const double tol_m = 1e-10 * std::max(1.0, em.eigenvalues().cwiseAbs().maxCoeff());
+    const Eigen::VectorXd inv = em.eigenvalues().unaryExpr(
+        [&](double l) { return l > tol_m ? 1.0 / l : 0.0; });
+    const Eigen::MatrixXd Hmm_inv = em.eigenvectors() * inv.asDiagonal() *
+                                    em.eigenvectors().transpose();
+    const Eigen::MatrixXd Hkm = H.bottomLeftCorner(nk, nm);
+    const Eigen::MatrixXd L = H.bottomRightCorner(nk, nk) - Hkm * Hmm_inv * Hkm.transpose();
+    const Eigen::VectorXd g = b.tail(nk) - Hkm * Hmm_inv * b.head(nm);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ek(0.5 * (L + L.transpose()));
+    const double tol_k = 1e-10 * std::max(1.0, ek.eigenvalues().cwiseAbs().maxCoeff());
+    std::vector<long> kept;
+    for (long i = 0; i < nk; ++i) {
+      if (ek.eigenvalues()[i] > tol_k) kept.push_back(i);
+    }
+    if (!kept.empty()) {
+      Eigen::MatrixXd J(static_cast<long>(kept.size()), nk);
+      Eigen::VectorXd r0(static_cast<long>(kept.size()));
+      for (size_t a = 0; a < kept.size(); ++a) {
+        const double l = ek.eigenvalues()[kept[a]];
+        const Eigen::VectorXd u = ek.eigenvectors().col(kept[a]);
+        J.row(static_cast<long>(a)) = std::sqrt(l) * u.transpose();
+        r0[static_cast<long>(a)] = u.dot(g) / std::sqrt(l);
+      }
+      std::vector<StateBlock> blocks;
+      Eigen::VectorXd x_lin(0);
+      for (const std::string& v : k_order) {
+        StateBlock blk = vars_.at(v).block;
+        blocks.push_back(blk);
+        const Eigen::VectorXd& x = vars_.at(v).value;
+        x_lin.conservativeResize(x_lin.size() + x.size());
+        x_lin.tail(x.size()) = x;
+      }
+      Factor prior{std::make_shared<MarginalPriorModel>(blocks, x_lin, J, r0), k_order, 0.0,
+                   "marginal_prior"};
+      // Drop the old factors and variables, then add the new prior.
+      for (const std::string& v : names) removeVariable(v);
+      factors_.push_back(std::move(prior));
+      return;
+    }
+  }
+  for (const std::string& v : names) removeVariable(v);
+}
+
+}  // namespace giocal
