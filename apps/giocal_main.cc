@@ -7,6 +7,7 @@
 
 #include "apps/calibrate_command.h"
 #include "apps/check_command.h"
+#include "apps/compare_command.h"
 #include "apps/simulate_command.h"
 #include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
@@ -26,10 +27,7 @@ const char* kUsage =
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir> "
     "[--overwrite]\n"
-    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>]\n";
-
-// Sub-commands of the command-line contract that are not implemented yet, and their issue.
-const std::map<std::string, std::string> kNotYet{{"compare", "issue 6, the factor graph"}};
+    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite]\n";
 
 int runCheckCommand(int argc, char** argv) {
   po::options_description opts("giocal check");
@@ -106,6 +104,24 @@ int runCalibrateCommand(int argc, char** argv) {
   return 0;
 }
 
+int runCompareCommand(int argc, char** argv) {
+  po::options_description opts("giocal compare");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
+      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
+      "out", po::value<std::string>()->default_value(""), "output folder")(
+      "overwrite", "replace existing outputs in --out");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, opts), vm);
+  po::notify(vm);
+  giocal::CompareJob job;
+  job.data = vm["data"].as<std::string>();
+  job.config = vm["config"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") != 0;
+  giocal::runCompare(job, std::cout);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -119,11 +135,7 @@ int main(int argc, char** argv) {
     if (command == "simulate") return runSimulateCommand(argc - 1, argv + 1);
     if (command == "rtk") return runRtkCommand(argc - 1, argv + 1);
     if (command == "calibrate") return runCalibrateCommand(argc - 1, argv + 1);
-    if (kNotYet.count(command)) {
-      std::cerr << "giocal " << command << ": not implemented yet (" << kNotYet.at(command)
-                << ")\n";
-      return 3;
-    }
+    if (command == "compare") return runCompareCommand(argc - 1, argv + 1);
     std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
     return 2;
   } catch (const giocal::DataError& e) {

@@ -3,6 +3,7 @@
 // prints the mean absolute final errors in the form of the reference paper's Table "Mean
 // calibration errors", the mean NEES of the seven observable calibration states, and timing.
 // Usage: giocal_monte_carlo [--preset config/sim/paper.yaml] [--seeds 20] [--first 1]
+//                           [--config <yaml>] [--estimator ekf|fgo]
 #include <sys/resource.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/math/rotation.h"
 #include "ekf/ekf_calibrator.h"
+#include "fgo/fgo_calibrator.h"
 #include "sim/simulator.h"
 
 namespace {
@@ -27,7 +29,7 @@ using Runner = std::function<giocal::CalibrationRun(const giocal::CalibrationInp
 
 struct Tally {
   std::vector<double> abs[7];  // X, Y, roll, pitch, yaw, s_v, s_w
-  std::vector<double> nees, wall, rtf, fix;
+  std::vector<double> nees, wall, rtf, fix, epoch;
   int failures = 0;
 };
 
@@ -53,6 +55,8 @@ int main(int argc, char** argv) {
       first = std::stoi(v);
     else if (k == "--config")
       config = v;
+    else if (k == "--estimator")
+      continue;  // read below
     else {
       std::cerr << "unknown option " << k << "\n";
       return 2;
@@ -60,7 +64,21 @@ int main(int argc, char** argv) {
   }
   const giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
   const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
-  const std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
+  const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
+  std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
+  estimators["fgo"] = [&](const giocal::CalibrationInputs& in,
+                          const giocal::CalibrationOptions& o) {
+    return giocal::runFgoCalibration(in, o, fgo_options);
+  };
+  std::string only;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (std::string(argv[i]) == "--estimator") only = argv[i + 1];
+  }
+  if (!only.empty()) {
+    for (auto it = estimators.begin(); it != estimators.end();) {
+      it = it->first == only ? std::next(it) : estimators.erase(it);
+    }
+  }
   std::map<std::string, Tally> tally;
   const std::string work = std::filesystem::temp_directory_path() / "giocal_monte_carlo";
   std::printf("%-6s %-4s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
@@ -93,6 +111,7 @@ int main(int argc, char** argv) {
       for (int k = 0; k < 7; ++k) t.abs[k].push_back(std::abs(v[k]));
       t.nees.push_back(e.nees7);
       t.wall.push_back(r.wall_time_s);
+      if (r.timing.count("mean_epoch_s")) t.epoch.push_back(r.timing.at("mean_epoch_s"));
       t.rtf.push_back(r.data_duration_s / r.wall_time_s);
       t.fix.push_back(100.0 * r.fixRate());
       std::printf("%-6d %-4s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n", seed,
@@ -111,6 +130,9 @@ int main(int argc, char** argv) {
                 ("giocal " + name).c_str(), mean(t.abs[0]), mean(t.abs[1]), mean(t.abs[2]),
                 mean(t.abs[3]), mean(t.abs[4]), mean(t.abs[5]), mean(t.abs[6]), mean(t.nees),
                 mean(t.fix), mean(t.rtf));
+    if (!t.epoch.empty())
+      std::printf("  %s: mean solve time per GNSS epoch %.1f ms\n", name.c_str(),
+                  1e3 * mean(t.epoch));
     if (t.failures) std::printf("  %s failed on %d seeds\n", name.c_str(), t.failures);
   }
   std::printf(

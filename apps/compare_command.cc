@@ -1,0 +1,119 @@
+#include "apps/compare_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/calibration/calibration_inputs.h"
+#include "common/io/atomic_file.h"
+#include "common/math/rotation.h"
+#include "ekf/ekf_calibrator.h"
+#include "fgo/fgo_calibrator.h"
+
+namespace giocal {
+namespace {
+
+struct Row {
+  std::string name;
+  double value[2], sd[2], error[2];
+};
+
+}  // namespace
+
+void runCompare(const CompareJob& job, std::ostream& log) {
+  const std::string out = job.out.empty() ? job.data + "/giocal_compare" : job.out;
+  const std::vector<std::string> files{"compare.csv", "ekf/summary.json", "fgo/summary.json"};
+  if (!job.overwrite) {
+    for (const std::string& f : files) {
+      if (std::filesystem::exists(out + "/" + f)) {
+        throw std::runtime_error(out + "/" + f + " exists; give --overwrite to replace it");
+      }
+    }
+  }
+  const CalibrationOptions options = readCalibrationOptions(job.config);
+  const auto t0 = std::chrono::steady_clock::now();
+  const CalibrationInputs in = loadCalibrationInputs(job.data);
+  const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CalibrationRun runs[2] = {runEkfCalibration(in, options),
+                            runFgoCalibration(in, options, readFgoOptions(job.config))};
+  const OdometerCalibration* truth = in.truth ? &in.truth->calib : nullptr;
+  for (CalibrationRun& r : runs) {
+    r.load_time_s = load_s;
+    writeCalibrationRun(out + "/" + r.estimator, r, truth);
+  }
+
+  std::vector<Row> rows;
+  const char* names[8] = {"s_v", "s_w", "p_b_m.x [m]", "p_b_m.y [m]", "p_b_m.z [m]",
+                          "roll [deg]", "pitch [deg]", "yaw [deg]"};
+  for (int i = 0; i < 8; ++i) rows.push_back({names[i], {}, {}, {}});
+  for (int a = 0; a < 2; ++a) {
+    const CalibrationEstimate& e = runs[a].history.back();
+    const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
+    const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
+    const double v[8] = {e.calib.s_v, e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
+                         e.calib.p_b_m.z(), rpy.x(), rpy.y(), rpy.z()};
+    for (int i = 0; i < 8; ++i) {
+      rows[static_cast<size_t>(i)].value[a] = v[i];
+      rows[static_cast<size_t>(i)].sd[a] =
+          i < 5 ? std::sqrt(std::max(0.0, e.cov(i, i))) : sd_rpy[i - 5];
+      rows[static_cast<size_t>(i)].error[a] = NAN;
+    }
+    if (truth) {
+      const CalibrationError err = calibrationError(e, *truth);
+      const double d[8] = {err.s_v,        err.s_w,        err.p_b_m.x(),
+                           err.p_b_m.y(),  err.p_b_m.z(),  err.rpy.x() * kRadToDeg,
+                           err.rpy.y() * kRadToDeg, err.rpy.z() * kRadToDeg};
+      for (int i = 0; i < 8; ++i) rows[static_cast<size_t>(i)].error[a] = d[i];
+    }
+  }
+  // Table on the terminal.
+  log << std::fixed << "giocal compare: " << job.data << "\n"
+      << std::left << std::setw(17) << "" << std::right << std::setw(12) << "ekf" << std::setw(10)
+      << "sigma" << std::setw(11) << "error" << " | " << std::setw(12) << "fgo" << std::setw(10)
+      << "sigma" << std::setw(11) << "error" << "\n";
+  for (const Row& r : rows) {
+    log << std::left << std::setw(17) << r.name << std::right;
+    for (int a = 0; a < 2; ++a) {
+      log << std::setprecision(5) << std::setw(12) << r.value[a] << std::setw(10) << r.sd[a]
+          << std::setw(11) << r.error[a] << (a == 0 ? " | " : "\n");
+    }
+  }
+  std::ostringstream csv;
+  csv << std::setprecision(12) << "quantity,ekf,ekf_sd,ekf_error,fgo,fgo_sd,fgo_error\n";
+  for (const Row& r : rows) {
+    csv << r.name;
+    for (int a = 0; a < 2; ++a) csv << "," << r.value[a] << "," << r.sd[a] << "," << r.error[a];
+    csv << "\n";
+  }
+  const char* stats[4] = {"fix rate [%]", "wall time [s]", "real-time factor", "GNSS epochs"};
+  for (int i = 0; i < 4; ++i) {
+    log << std::left << std::setw(17) << stats[i] << std::right;
+    csv << stats[i];
+    for (int a = 0; a < 2; ++a) {
+      const CalibrationRun& r = runs[a];
+      const double v[4] = {100.0 * r.fixRate(), r.wall_time_s,
+                           r.wall_time_s > 0 ? r.data_duration_s / r.wall_time_s : 0.0,
+                           static_cast<double>(r.gnss_epochs)};
+      log << std::setprecision(i == 1 ? 3 : 1) << std::setw(12) << v[i] << std::setw(21) << ""
+          << (a == 0 ? " | " : "\n");
+      csv << "," << v[i] << ",,";
+    }
+    csv << "\n";
+  }
+  log << "(errors against truth_calib.yaml" << (truth ? "" : ": none in this dataset")
+      << "; p_b_m.z held at the prior in both)\n";
+  for (const CalibrationRun& r : runs) {
+    for (const std::string& w : r.warnings) log << "  " << r.estimator << " warning: " << w << "\n";
+  }
+  AtomicFile f(out + "/compare.csv");
+  f.stream() << csv.str();
+  f.commit();
+  log << "outputs: " << out << "/{compare.csv, ekf/, fgo/}\n";
+  log.unsetf(std::ios::fixed);
+}
+
+}  // namespace giocal

@@ -1,0 +1,19 @@
+// `giocal compare --data <dir> [--config <yaml>] [--out <dir>]`: both estimators on one dataset,
+// side by side.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+namespace giocal {
+
+struct CompareJob {
+  std::string data, config, out;  // out empty: <data>/giocal_compare
+  bool overwrite = false;
+};
+
+/// Runs the EKF and the factor graph, writes each one's outputs into <out>/ekf and <out>/fgo and
+/// the comparison table into <out>/compare.csv, and prints the table.
+void runCompare(const CompareJob& job, std::ostream& log);
+
+}  // namespace giocal
