@@ -37,7 +37,8 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   const CalibrationOptions options = readCalibrationOptions(job.config);
   const auto t0 = std::chrono::steady_clock::now();
   const CalibrationInputs in = loadCalibrationInputs(job.data);
-  const double load_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double load_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CalibrationRun runs[2] = {runEkfCalibration(in, options),
                             runFgoCalibration(in, options, readFgoOptions(job.config))};
   const OdometerCalibration* truth = in.truth ? &in.truth->calib : nullptr;
@@ -47,15 +48,15 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   }
 
   std::vector<Row> rows;
-  const char* names[8] = {"s_v", "s_w", "p_b_m.x [m]", "p_b_m.y [m]", "p_b_m.z [m]",
-                          "roll [deg]", "pitch [deg]", "yaw [deg]"};
+  const char* names[8] = {"s_v",         "s_w",        "p_b_m.x [m]", "p_b_m.y [m]",
+                          "p_b_m.z [m]", "roll [deg]", "pitch [deg]", "yaw [deg]"};
   for (int i = 0; i < 8; ++i) rows.push_back({names[i], {}, {}, {}});
   for (int a = 0; a < 2; ++a) {
     const CalibrationEstimate& e = runs[a].history.back();
     const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
     const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
-    const double v[8] = {e.calib.s_v, e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
-                         e.calib.p_b_m.z(), rpy.x(), rpy.y(), rpy.z()};
+    const double v[8] = {e.calib.s_v,       e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
+                         e.calib.p_b_m.z(), rpy.x(),     rpy.y(),           rpy.z()};
     for (int i = 0; i < 8; ++i) {
       rows[static_cast<size_t>(i)].value[a] = v[i];
       rows[static_cast<size_t>(i)].sd[a] =
@@ -64,17 +65,23 @@ void runCompare(const CompareJob& job, std::ostream& log) {
     }
     if (truth) {
       const CalibrationError err = calibrationError(e, *truth);
-      const double d[8] = {err.s_v,        err.s_w,        err.p_b_m.x(),
-                           err.p_b_m.y(),  err.p_b_m.z(),  err.rpy.x() * kRadToDeg,
-                           err.rpy.y() * kRadToDeg, err.rpy.z() * kRadToDeg};
+      const double d[8] = {err.s_v,
+                           err.s_w,
+                           err.p_b_m.x(),
+                           err.p_b_m.y(),
+                           err.p_b_m.z(),
+                           err.rpy.x() * kRadToDeg,
+                           err.rpy.y() * kRadToDeg,
+                           err.rpy.z() * kRadToDeg};
       for (int i = 0; i < 8; ++i) rows[static_cast<size_t>(i)].error[a] = d[i];
     }
   }
   // Table on the terminal.
   log << std::fixed << "giocal compare: " << job.data << "\n"
       << std::left << std::setw(17) << "" << std::right << std::setw(12) << "ekf" << std::setw(10)
-      << "sigma" << std::setw(11) << "error" << " | " << std::setw(12) << "fgo" << std::setw(10)
-      << "sigma" << std::setw(11) << "error" << "\n";
+      << "sigma" << std::setw(11) << "error"
+      << " | " << std::setw(12) << "fgo" << std::setw(10) << "sigma" << std::setw(11) << "error"
+      << "\n";
   for (const Row& r : rows) {
     log << std::left << std::setw(17) << r.name << std::right;
     for (int a = 0; a < 2; ++a) {

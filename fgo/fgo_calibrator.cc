@@ -182,16 +182,18 @@ std::string FactorGraphCalibrator::ambiguityVar(const SatId& sat, char band) con
   return "N:" + sat.str() + ":" + std::string(1, band) + "#" + std::to_string(it->second);
 }
 
-void FactorGraphCalibrator::newAmbiguity(const SatId& sat, char band, double value,
-                                         double lambda) {
+void FactorGraphCalibrator::newAmbiguity(const SatId& sat, char band, double value, double lambda) {
   ++amb_version_[{sat, band}];
   const std::string name = ambiguityVar(sat, band);
   w_.addVariable(vectorBlock(name, 1), Eigen::VectorXd::Constant(1, value));
   // Start from code, as the filter does: 10 m of uncertainty.
-  w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(name, 1)},
-                                             Eigen::VectorXd::Constant(1, value),
-                                             Eigen::MatrixXd::Constant(1, 1, std::pow(10.0 / lambda, 2))),
-                {name}, 0.0, "ambiguity_prior"});
+  w_.addFactor(
+      {std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(name, 1)},
+                                    Eigen::VectorXd::Constant(1, value),
+                                    Eigen::MatrixXd::Constant(1, 1, std::pow(10.0 / lambda, 2))),
+       {name},
+       0.0,
+       "ambiguity_prior"});
 }
 
 std::vector<std::string> FactorGraphCalibrator::phaseVars(
@@ -224,9 +226,9 @@ void FactorGraphCalibrator::start(const InitialState& init) {
   P.block(15, 15, 8, 8) = priorCalibrationCovariance(prior);
   P.block(0, 15, 15, 8) = init.P_nav_calib;
   P.block(15, 0, 8, 15) = init.P_nav_calib.transpose();
-  std::vector<StateBlock> blocks{vectorBlock(e.p),  rotationBlock(e.q), vectorBlock(e.v),
-                                 vectorBlock(e.ba), vectorBlock(e.bg),  vectorBlock(e.sv, 1),
-                                 vectorBlock(e.sw, 1), vectorBlock(kPbm), rotationBlock(kQbm)};
+  std::vector<StateBlock> blocks{vectorBlock(e.p),     rotationBlock(e.q), vectorBlock(e.v),
+                                 vectorBlock(e.ba),    vectorBlock(e.bg),  vectorBlock(e.sv, 1),
+                                 vectorBlock(e.sw, 1), vectorBlock(kPbm),  rotationBlock(kQbm)};
   Eigen::VectorXd mean(0);
   std::vector<std::string> names;
   for (const StateBlock& b : blocks) {
@@ -236,15 +238,19 @@ void FactorGraphCalibrator::start(const InitialState& init) {
     names.push_back(b.name);
   }
   w_.addFactor({std::make_shared<PriorModel>(blocks, mean, P), names, 0.0, "initial_prior"});
-  w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.cd, 1)},
-                                             Eigen::VectorXd::Zero(1),
-                                             Eigen::MatrixXd::Constant(1, 1, 1e6)),
-                {e.cd}, 0.0, "clock_drift_prior"});
+  w_.addFactor(
+      {std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.cd, 1)},
+                                    Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Constant(1, 1, 1e6)),
+       {e.cd},
+       0.0,
+       "clock_drift_prior"});
   if (o_.estimate_p_b_g) {
     w_.addFactor({std::make_shared<PriorModel>(
                       std::vector<StateBlock>{vectorBlock(kPbg)}, in_.description.p_b_g,
                       Eigen::Matrix3d::Identity() * o_.p_b_g_sigma * o_.p_b_g_sigma),
-                  {kPbg}, 0.0, "lever_prior"});
+                  {kPbg},
+                  0.0,
+                  "lever_prior"});
   } else {
     w_.setConstant(kPbg, true);
   }
@@ -321,9 +327,11 @@ void FactorGraphCalibrator::gnssFactors(Epoch& e, const ObsEpoch& rover, const O
 void FactorGraphCalibrator::addGnssRowFactors(const Epoch& e) {
   for (const char* t : {"dd_code", "dd_phase", "doppler"}) w_.removeFactors(tagged(t, e.k));
   if (!e.code_rows.empty()) {
-    w_.addFactor({std::make_shared<DdGnssModel>(frame_, e.dd.geometry, e.code_rows,
-                                                e.dd.undiff_variance),
-                  {e.p, e.q, kPbg}, fo_.code_huber, tagged("dd_code", e.k)});
+    w_.addFactor(
+        {std::make_shared<DdGnssModel>(frame_, e.dd.geometry, e.code_rows, e.dd.undiff_variance),
+         {e.p, e.q, kPbg},
+         fo_.code_huber,
+         tagged("dd_code", e.k)});
   }
   if (!e.phase_rows.empty()) {
     auto model =
@@ -335,7 +343,9 @@ void FactorGraphCalibrator::addGnssRowFactors(const Epoch& e) {
   }
   if (e.doppler.size() >= 4) {
     w_.addFactor({std::make_shared<DopplerModel>(frame_.R_e_n(), e.gyro, e.doppler),
-                  {e.v, e.q, e.bg, kPbg, e.cd}, fo_.code_huber, tagged("doppler", e.k)});
+                  {e.v, e.q, e.bg, kPbg, e.cd},
+                  fo_.code_huber,
+                  tagged("doppler", e.k)});
   }
 }
 
@@ -349,7 +359,8 @@ bool FactorGraphCalibrator::rejectWorstRow(Epoch& e) {
     const std::vector<DdObservation>& rows = ph ? e.phase_rows : e.code_rows;
     if (rows.empty()) continue;
     const DdGnssModel m(frame_, e.dd.geometry, rows, e.dd.undiff_variance);
-    std::vector<std::string> vars = ph ? phaseVars(m, rows) : std::vector<std::string>{"", "", kPbg};
+    std::vector<std::string> vars =
+        ph ? phaseVars(m, rows) : std::vector<std::string>{"", "", kPbg};
     vars[0] = e.p;
     vars[1] = e.q;
     std::vector<const double*> params;
@@ -372,7 +383,8 @@ bool FactorGraphCalibrator::rejectWorstRow(Epoch& e) {
   rows.erase(rows.begin() + which);
   if (phase) {
     for (const SdAmbiguity& a : e.dd.ambiguities) {
-      if (a.sat == bad.sat && a.band == bad.band) newAmbiguity(a.sat, a.band, a.code_value, a.lambda);
+      if (a.sat == bad.sat && a.band == bad.band)
+        newAmbiguity(a.sat, a.band, a.code_value, a.lambda);
     }
     ++run_.counters["ambiguity_resets"];
   }
@@ -429,9 +441,11 @@ bool FactorGraphCalibrator::resolve(Epoch& e) {
   if (fresh.empty()) return true;
   const std::string tag = tagged("fix", e.k);
   for (const DdAmbiguityFix& f : fresh) {
-    w_.addFactor({std::make_shared<AmbiguityFixModel>(std::vector<DdAmbiguityFix>{f},
-                                                      o_.fix_sigma_cycles),
-                  {f.sat_block, f.ref_block}, 0.0, tag});
+    w_.addFactor(
+        {std::make_shared<AmbiguityFixModel>(std::vector<DdAmbiguityFix>{f}, o_.fix_sigma_cycles),
+         {f.sat_block, f.ref_block},
+         0.0,
+         tag});
   }
   w_.solve(fo_.max_iterations);
   // Validate by the fixed solution's DD phase residuals, not by the cost (the IMU and odometer
@@ -489,8 +503,7 @@ void FactorGraphCalibrator::outputTrajectory(const Epoch& from, const Epoch& to)
     s.lat_deg = g.lat * kRadToDeg;
     s.lon_deg = g.lon * kRadToDeg;
     s.h = g.h;
-    const Eigen::Matrix3d R_here_n =
-        rotationEcefFromEnu(g.lat, g.lon).transpose() * frame_.R_e_n();
+    const Eigen::Matrix3d R_here_n = rotationEcefFromEnu(g.lat, g.lon).transpose() * frame_.R_e_n();
     s.v_enu = R_here_n * x.v_n_b;
     s.q_n_b = Eigen::Quaterniond(R_here_n * x.q_n_b.toRotationMatrix()).normalized();
     run_.trajectory.push_back(s);
@@ -536,34 +549,39 @@ bool FactorGraphCalibrator::addEpoch(const ObsEpoch& rover, const ObsEpoch& base
   Epoch e = newEpoch(rover.t);
   const double dt = e.t - prev.t;
   const NavState x_prev = nav(prev);
-  auto imu = std::make_shared<ImuPreintegration>(in_.description.imu_noise,
-                                                 frame_.gravity_n(x_prev.p_n_b),
-                                                 frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g);
+  auto imu =
+      std::make_shared<ImuPreintegration>(in_.description.imu_noise, frame_.gravity_n(x_prev.p_n_b),
+                                          frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g);
   imu->integrateSamples(in_.imu, prev.t, e.t);
   addNavVariables(e, imu->predict(x_prev), w_.value(prev.sv)[0], w_.value(prev.sw)[0],
                   w_.value(prev.cd)[0]);
   w_.addFactor({std::make_shared<ImuPreintegrationModel>(imu),
-                {prev.p, prev.q, prev.v, prev.ba, prev.bg, e.p, e.q, e.v, e.ba, e.bg}, 0.0,
+                {prev.p, prev.q, prev.v, prev.ba, prev.bg, e.p, e.q, e.v, e.ba, e.bg},
+                0.0,
                 tagged("imu", e.k)});
   OdometerPreintegrationNoise on;
   on.speed_sigma = in_.description.odom_noise.speed_sigma;
   on.yaw_rate_sigma = in_.description.odom_noise.yaw_rate_sigma;
   on.lateral_speed_density = o_.models.lateral_speed_density;
   on.tilt_rate_density = o_.models.tilt_rate_density;
-  auto odo = std::make_shared<OdometerPreintegration>(on, w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
+  auto odo =
+      std::make_shared<OdometerPreintegration>(on, w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
   if (in_.odom.front().t <= prev.t) {
     odo->integrateSamples(in_.odom, prev.t, e.t);
     w_.addFactor({std::make_shared<OdometerPreintegrationModel>(odo),
-                  {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm}, 0.0,
+                  {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm},
+                  0.0,
                   tagged("odometer", e.k)});
   }
   // Scales and clock drift as random walks (a floor keeps a zero density well posed).
   const double q_s = std::max(in_.description.odom_noise.scale_random_walk, 1e-5) * std::sqrt(dt);
   w_.addFactor({std::make_shared<RandomWalkModel>("s_v", 1, q_s), {prev.sv, e.sv}, 0.0, "rw"});
   w_.addFactor({std::make_shared<RandomWalkModel>("s_w", 1, q_s), {prev.sw, e.sw}, 0.0, "rw"});
-  w_.addFactor({std::make_shared<RandomWalkModel>("cdt_dot", 1,
-                                                  std::max(o_.clock_drift_noise, 1e-6) * std::sqrt(dt)),
-                {prev.cd, e.cd}, 0.0, "rw"});
+  w_.addFactor({std::make_shared<RandomWalkModel>(
+                    "cdt_dot", 1, std::max(o_.clock_drift_noise, 1e-6) * std::sqrt(dt)),
+                {prev.cd, e.cd},
+                0.0,
+                "rw"});
   // Motion constraints.
   feedMotion(e.t, x_prev.b_g);
   e.still = motion_.isStatic();
@@ -571,14 +589,18 @@ bool FactorGraphCalibrator::addEpoch(const ObsEpoch& rover, const ObsEpoch& base
     w_.addFactor({std::make_shared<ZuptModel>(o_.models.zupt_sigma), {e.v}, 0.0, "zupt"});
     if (prev.still) {
       w_.addFactor({std::make_shared<HeadingChangeModel>(o_.heading_sigma_deg * kDegToRad),
-                    {prev.q, e.q}, 0.0, "heading"});
+                    {prev.q, e.q},
+                    0.0,
+                    "heading"});
     }
   }
   if (motion_.nhcApplies()) {
     const GyroMean g = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                                 in_.description.imu_noise.gyro_noise_density);
     w_.addFactor({std::make_shared<NhcModel>(g.rate, o_.models.nhc_sigma),
-                  {e.v, e.q, e.bg, kPbm, kQbm}, 0.0, "nhc"});
+                  {e.v, e.q, e.bg, kPbm, kQbm},
+                  0.0,
+                  "nhc"});
   }
   gnssFactors(e, rover, base);
   epochs_.push_back(e);
@@ -610,8 +632,8 @@ CalibrationRun runFgoCalibration(const CalibrationInputs& in, const CalibrationO
     run.counters[c] = 0;
   }
   std::string why;
-  const auto init = findInitialState(in, options, in.description.initial_calibration,
-                                     in.imu.front().t, &why);
+  const auto init =
+      findInitialState(in, options, in.description.initial_calibration, in.imu.front().t, &why);
   if (!init) throw std::runtime_error("could not initialize: " + why);
   run.t_initialized = init->x.t;
   run.initialization = {{"static_window_s", init->static_window_s},
@@ -623,9 +645,8 @@ CalibrationRun runFgoCalibration(const CalibrationInputs& in, const CalibrationO
   int solved = 0;
   for (const ObsEpoch& rover : in.rover.epochs) {
     if (rover.t <= graph.epochs().back().t + 1e-6 || rover.t > in.imu.back().t) continue;
-    while (k_base + 1 < in.base.epochs.size() &&
-           std::abs(in.base.epochs[k_base + 1].t - rover.t) <=
-               std::abs(in.base.epochs[k_base].t - rover.t)) {
+    while (k_base + 1 < in.base.epochs.size() && std::abs(in.base.epochs[k_base + 1].t - rover.t) <=
+                                                     std::abs(in.base.epochs[k_base].t - rover.t)) {
       ++k_base;
     }
     if (std::abs(in.base.epochs[k_base].t - rover.t) > options.max_base_offset) {
@@ -640,8 +661,7 @@ CalibrationRun runFgoCalibration(const CalibrationInputs& in, const CalibrationO
     run.fixed_epochs += fixed;
   }
   run.timing["mean_epoch_s"] = solved ? epoch_time / solved : 0.0;
-  run.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 

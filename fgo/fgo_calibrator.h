@@ -11,8 +11,7 @@
 namespace giocal {
 
 /// Throws std::runtime_error when the data never allow an initial state (the message says why).
-CalibrationRun runFgoCalibration(const CalibrationInputs& inputs,
-                                 const CalibrationOptions& options,
+CalibrationRun runFgoCalibration(const CalibrationInputs& inputs, const CalibrationOptions& options,
                                  const FgoOptions& fgo_options = {});
 
 }  // namespace giocal

@@ -18,8 +18,8 @@ void MarginalPriorModel::evaluate(const double* const* params, Eigen::VectorXd& 
       // The first-estimate Jacobian is kept for the rotation's tangent too (no Jr^-1 update).
       dx.segment<3>(t) = boxMinus(quatFromWxyz(params[k]), quatFromWxyz(x_lin_.data() + a));
     } else {
-      dx.segment(t, b.size) = Eigen::Map<const Eigen::VectorXd>(params[k], b.size) -
-                              x_lin_.segment(a, b.size);
+      dx.segment(t, b.size) =
+          Eigen::Map<const Eigen::VectorXd>(params[k], b.size) - x_lin_.segment(a, b.size);
     }
     a += b.ambientSize();
     t += b.tangentSize();

@@ -19,8 +19,7 @@ namespace {
 Eigen::MatrixXd whitener(const Eigen::MatrixXd& C) {
   const Eigen::LLT<Eigen::MatrixXd> llt(C);
   const Eigen::MatrixXd L = llt.matrixL();
-  return L.triangularView<Eigen::Lower>().solve(
-      Eigen::MatrixXd::Identity(C.rows(), C.cols()));
+  return L.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(C.rows(), C.cols()));
 }
 
 }  // namespace
@@ -89,7 +88,7 @@ std::vector<std::string> SlidingWindow::estimatedVariables() const {
   return out;
 }
 
-SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations) {
+SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double function_tolerance) {
   ceres::Problem::Options po;
   po.manifold_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(po);
@@ -120,6 +119,7 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations) {
   ceres::Solver::Options options;
   options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   options.max_num_iterations = max_iterations;
+  options.function_tolerance = function_tolerance;
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
@@ -129,8 +129,8 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations) {
     Variable& v = vars_.at(n);
     if (v.block.kind == BlockKind::kRotation) v.value.normalize();
   }
-  return {summary.IsSolutionUsable(),
-          static_cast<int>(summary.iterations.size()), summary.final_cost};
+  return {summary.IsSolutionUsable(), static_cast<int>(summary.iterations.size()),
+          summary.final_cost};
 }
 
 void SlidingWindow::linearize(const std::vector<std::string>& order,
@@ -159,7 +159,8 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
     }
     for (const auto& [oa, Ja] : cols) {
       b.segment(oa, Ja.cols()) += Ja.transpose() * rw;
-      for (const auto& [ob, Jb] : cols) H.block(oa, ob, Ja.cols(), Jb.cols()) += Ja.transpose() * Jb;
+      for (const auto& [ob, Jb] : cols)
+        H.block(oa, ob, Ja.cols(), Jb.cols()) += Ja.transpose() * Jb;
     }
   }
 }
@@ -221,10 +222,10 @@ void SlidingWindow::marginalize(const std::vector<std::string>& names) {
     // directions nothing observed).
     const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(H.topLeftCorner(nm, nm));
     const double tol_m = 1e-10 * std::max(1.0, em.eigenvalues().cwiseAbs().maxCoeff());
-    const Eigen::VectorXd inv = em.eigenvalues().unaryExpr(
-        [&](double l) { return l > tol_m ? 1.0 / l : 0.0; });
-    const Eigen::MatrixXd Hmm_inv = em.eigenvectors() * inv.asDiagonal() *
-                                    em.eigenvectors().transpose();
+    const Eigen::VectorXd inv =
+        em.eigenvalues().unaryExpr([&](double l) { return l > tol_m ? 1.0 / l : 0.0; });
+    const Eigen::MatrixXd Hmm_inv =
+        em.eigenvectors() * inv.asDiagonal() * em.eigenvectors().transpose();
     const Eigen::MatrixXd Hkm = H.bottomLeftCorner(nk, nm);
     const Eigen::MatrixXd L = H.bottomRightCorner(nk, nk) - Hkm * Hmm_inv * Hkm.transpose();
     const Eigen::VectorXd g = b.tail(nk) - Hkm * Hmm_inv * b.head(nm);

@@ -45,7 +45,8 @@ class SlidingWindow {
     int iterations = 0;
     double final_cost = 0.0;
   };
-  SolveReport solve(int max_iterations);
+  /// Ceres' default relative cost-change tolerance is 1e-6.
+  SolveReport solve(int max_iterations, double function_tolerance = 1e-6);
 
   /// Whitened Gauss-Newton system over `order` (tangent, in that order) from `factors` at the
   /// current values: H = sum J^T J, b = sum J^T r. Factors' other variables are ignored.

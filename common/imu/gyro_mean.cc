@@ -5,8 +5,7 @@
 
 namespace giocal {
 
-GyroMean meanGyro(const std::vector<ImuSample>& imu, double t, double half_window,
-                  double density) {
+GyroMean meanGyro(const std::vector<ImuSample>& imu, double t, double half_window, double density) {
   auto it = std::lower_bound(imu.begin(), imu.end(), t - half_window,
                              [](const ImuSample& s, double x) { return s.t < x; });
   GyroMean m;

@@ -16,7 +16,6 @@ struct GyroMean {
 
 /// Samples within [t - half_window, t + half_window] (at least the one nearest t); density is the
 /// gyro's white noise [rad/s/sqrt(Hz)]. `imu` must be sorted by time and not empty.
-GyroMean meanGyro(const std::vector<ImuSample>& imu, double t, double half_window,
-                  double density);
+GyroMean meanGyro(const std::vector<ImuSample>& imu, double t, double half_window, double density);
 
 }  // namespace giocal

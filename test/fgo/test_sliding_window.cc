@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "common/models/prior_model.h"
+#include "common/models/random_walk_model.h"
+#include "fgo/sliding_window.h"
+
+namespace giocal {
+namespace {
+
+std::shared_ptr<PriorModel> prior(const std::string& name, const Eigen::Vector3d& mean,
+                                  double sigma) {
+  return std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(name)}, mean,
+                                      Eigen::Matrix3d::Identity() * sigma * sigma);
+}
+
+/// A chain x0 - x1 - x2 with priors at both ends: linear and Gaussian, so marginalizing x0 must
+/// leave exactly the same estimate and covariance of x1 and x2.
+SlidingWindow chain() {
+  SlidingWindow w;
+  for (const char* n : {"x0", "x1", "x2"}) w.addVariable(vectorBlock(n), Eigen::Vector3d::Zero());
+  w.addFactor({prior("x0", Eigen::Vector3d(1, 2, 3), 0.5), {"x0"}, 0.0, "p0"});
+  w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 0.3), {"x0", "x1"}, 0.0, "rw"});
+  w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 0.2), {"x1", "x2"}, 0.0, "rw"});
+  w.addFactor({prior("x2", Eigen::Vector3d(1.5, 1.0, 3.2), 0.4), {"x2"}, 0.0, "p2"});
+  return w;
+}
+
+TEST(SlidingWindow, MarginalizationKeepsTheEstimateAndCovariance) {
+  SlidingWindow full = chain();
+  ASSERT_TRUE(full.solve(50, 1e-14).usable);
+  const Eigen::MatrixXd C_full = full.covariance({"x1", "x2"});
+
+  SlidingWindow w = chain();
+  w.solve(50, 1e-14);
+  w.marginalize({"x0"});
+  EXPECT_FALSE(w.has("x0"));
+  ASSERT_EQ(w.factors().size(), 3u);  // marginal prior, rw x1-x2, prior x2
+  // Move the estimate away and solve again: the marginal prior brings it back.
+  w.value("x1") += Eigen::Vector3d(0.3, -0.2, 0.1);
+  w.value("x2") -= Eigen::Vector3d(0.1, 0.1, 0.1);
+  ASSERT_TRUE(w.solve(50, 1e-14).usable);
+  EXPECT_LT((w.value("x1") - full.value("x1")).norm(), 1e-6);  // solver precision
+  EXPECT_LT((w.value("x2") - full.value("x2")).norm(), 1e-6);
+  EXPECT_LT((w.covariance({"x1", "x2"}) - C_full).norm(), 1e-10);
+}
+
+TEST(SlidingWindow, AVariableThatLosesAllItsFactorsIsNoFailure) {
+  SlidingWindow w = chain();
+  w.addVariable(vectorBlock("lonely"), Eigen::Vector3d(5, 5, 5));
+  w.addFactor({prior("lonely", Eigen::Vector3d(5, 5, 5), 1.0), {"lonely"}, 0.0, "only"});
+  EXPECT_EQ(w.removeFactors("only"), 1);
+  EXPECT_TRUE(w.solve(10).usable);  // not in the problem, no error
+  EXPECT_EQ(w.value("lonely"), Eigen::Vector3d(5, 5, 5));
+  // Marginalizing a variable without factors just drops it.
+  w.marginalize({"lonely"});
+  EXPECT_FALSE(w.has("lonely"));
+  EXPECT_TRUE(w.solve(10).usable);
+}
+
+}  // namespace
+}  // namespace giocal
