@@ -2,6 +2,7 @@
 
 #include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
+#include "fgo/fgo_options.h"
 #include "common/io/data_error.h"
 #include "common/io/model_options.h"
 #include "temp_dir.h"
@@ -83,6 +84,19 @@ TEST(CalibrationOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_FALSE(g.ambiguity_resolution);
   EXPECT_THROW(readCalibrationOptions(dir.write("b.yaml", "calibration:\n  innovation_gate: 0\n")),
                DataError);
+}
+
+TEST(FgoOptions, ShippedConfigEqualsTheDefaults) {
+  const FgoOptions c = readFgoOptions(std::string(GIOCAL_SOURCE_DIR) + "/config/giocal.yaml");
+  const FgoOptions d;
+  EXPECT_EQ(c.window, d.window);
+  EXPECT_EQ(c.max_iterations, d.max_iterations);
+  EXPECT_DOUBLE_EQ(c.code_huber, d.code_huber);
+  EXPECT_DOUBLE_EQ(c.rejection_sigma, d.rejection_sigma);
+  EXPECT_EQ(c.max_rejections, d.max_rejections);
+  test::TempDir dir;
+  EXPECT_EQ(readFgoOptions(dir.write("w.yaml", "fgo:\n  window: 7\n")).window, 7);
+  EXPECT_THROW(readFgoOptions(dir.write("b.yaml", "fgo:\n  window: 1\n")), DataError);
 }
 
 TEST(ModelOptions, OverridesAndBadValues) {
