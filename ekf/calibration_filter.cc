@@ -285,18 +285,7 @@ TruthSample CalibrationFilter::trajectorySample(double t) {
   } else {
     t = t_;
   }
-  TruthSample s;
-  s.t = t;
-  const Eigen::Vector3d p_e = frame_.ecefFromEnu(x.p_n_b);
-  const Geodetic g = geodeticFromEcef(p_e);
-  s.lat_deg = g.lat * kRadToDeg;
-  s.lon_deg = g.lon * kRadToDeg;
-  s.h = g.h;
-  // truth.csv uses the local-level ENU frame at the current position.
-  const Eigen::Matrix3d R_here_n = rotationEcefFromEnu(g.lat, g.lon).transpose() * frame_.R_e_n();
-  s.v_enu = R_here_n * x.v_n_b;
-  s.q_n_b = Eigen::Quaterniond(R_here_n * x.q_n_b.toRotationMatrix()).normalized();
-  return s;
+  return truthRow(frame_, x, t);
 }
 
 }  // namespace giocal

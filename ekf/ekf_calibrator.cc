@@ -92,7 +92,8 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
   auto gnss = std::make_unique<GnssUpdate>(orbits, in.base_e, options);
 
   const double t_end = in.imu.back().t;
-  size_t k_odo = 0, k_gnss = 0, k_base = 0;
+  size_t k_odo = 0, k_gnss = 0;
+  BaseEpochMatcher matcher(in.base.epochs, options.max_base_offset);
   double next_output = init->x.t;
   long odo_rejected_in_row = 0;
   double t_prev_event = init->x.t, last_gap_start = NAN;
@@ -135,18 +136,14 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
       ++k_odo;
     } else {
       const ObsEpoch& rover = in.rover.epochs[k_gnss];
-      while (k_base + 1 < in.base.epochs.size() &&
-             std::abs(in.base.epochs[k_base + 1].t - rover.t) <=
-                 std::abs(in.base.epochs[k_base].t - rover.t)) {
-        ++k_base;
-      }
+      const ObsEpoch* base = matcher.nearest(rover.t);
       ++k_gnss;
-      if (std::abs(in.base.epochs[k_base].t - rover.t) > options.max_base_offset) {
+      if (!base) {
         ++counters["gnss_without_base"];
         continue;
       }
       const auto g0 = std::chrono::steady_clock::now();
-      const GnssEpochReport rep = gnss->process(*filter, rover, in.base.epochs[k_base]);
+      const GnssEpochReport rep = gnss->process(*filter, rover, *base);
       gnss_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - g0).count();
       counters["dd_rows"] += rep.dd_rows;
       counters["gnss_rows_rejected"] += rep.rejected_rows;

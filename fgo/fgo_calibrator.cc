@@ -97,6 +97,8 @@ class FactorGraphCalibrator {
   std::vector<std::string> phaseVars(const DdGnssModel& model,
                                      const std::vector<DdObservation>& rows) const;
   void start(const InitialState& init);
+  /// |residual| / sigma of each of the epoch's code or phase rows at the current values.
+  Eigen::VectorXd normalizedRowResiduals(const Epoch& e, bool phase) const;
   bool rejectWorstRow(Epoch& e);
   bool resolve(Epoch& e);
   void record(const Epoch& e);
@@ -349,6 +351,21 @@ void FactorGraphCalibrator::addGnssRowFactors(const Epoch& e) {
   }
 }
 
+Eigen::VectorXd FactorGraphCalibrator::normalizedRowResiduals(const Epoch& e, bool phase) const {
+  const std::vector<DdObservation>& rows = phase ? e.phase_rows : e.code_rows;
+  if (rows.empty()) return Eigen::VectorXd::Zero(1);
+  const DdGnssModel m(frame_, e.dd.geometry, rows, e.dd.undiff_variance);
+  std::vector<std::string> vars =
+      phase ? phaseVars(m, rows) : std::vector<std::string>{"", "", kPbg};
+  vars[0] = e.p;
+  vars[1] = e.q;
+  std::vector<const double*> params;
+  for (const std::string& v : vars) params.push_back(w_.value(v).data());
+  Eigen::VectorXd r;
+  m.evaluate(params.data(), r, nullptr);
+  return r.cwiseAbs().cwiseQuotient(m.covariance().diagonal().cwiseSqrt());
+}
+
 bool FactorGraphCalibrator::rejectWorstRow(Epoch& e) {
   // Residual-based rejection after a solve: the worst DD row beyond rejection_sigma goes; a
   // phase row's ambiguity restarts (most likely an undetected slip).
@@ -356,21 +373,10 @@ bool FactorGraphCalibrator::rejectWorstRow(Epoch& e) {
   int which = -1;
   bool phase = false;
   for (bool ph : {false, true}) {
-    const std::vector<DdObservation>& rows = ph ? e.phase_rows : e.code_rows;
-    if (rows.empty()) continue;
-    const DdGnssModel m(frame_, e.dd.geometry, rows, e.dd.undiff_variance);
-    std::vector<std::string> vars =
-        ph ? phaseVars(m, rows) : std::vector<std::string>{"", "", kPbg};
-    vars[0] = e.p;
-    vars[1] = e.q;
-    std::vector<const double*> params;
-    for (const std::string& v : vars) params.push_back(w_.value(v).data());
-    Eigen::VectorXd r;
-    m.evaluate(params.data(), r, nullptr);
-    const Eigen::VectorXd sd = m.covariance().diagonal().cwiseSqrt();
-    for (long i = 0; i < r.size(); ++i) {
-      if (std::abs(r[i]) / sd[i] > worst) {
-        worst = std::abs(r[i]) / sd[i];
+    const Eigen::VectorXd z = normalizedRowResiduals(e, ph);
+    for (long i = 0; i < z.size(); ++i) {
+      if (z[i] > worst) {
+        worst = z[i];
         which = static_cast<int>(i);
         phase = ph;
       }
@@ -450,16 +456,7 @@ bool FactorGraphCalibrator::resolve(Epoch& e) {
   w_.solve(fo_.max_iterations);
   // Validate by the fixed solution's DD phase residuals, not by the cost (the IMU and odometer
   // factors make any fix raise it).
-  const DdGnssModel m(frame_, e.dd.geometry, e.phase_rows, e.dd.undiff_variance);
-  std::vector<std::string> vars = phaseVars(m, e.phase_rows);
-  vars[0] = e.p;
-  vars[1] = e.q;
-  std::vector<const double*> params;
-  for (const std::string& v : vars) params.push_back(w_.value(v).data());
-  Eigen::VectorXd r;
-  m.evaluate(params.data(), r, nullptr);
-  const Eigen::VectorXd sd = m.covariance().diagonal().cwiseSqrt();
-  if ((r.cwiseAbs().array() / sd.array()).maxCoeff() > o_.max_fix_residual) {
+  if (normalizedRowResiduals(e, true).maxCoeff() > o_.max_fix_residual) {
     w_.removeFactors(tag);
     w_.solve(fo_.max_iterations);
     ++run_.counters["fixes_rejected"];
@@ -497,16 +494,7 @@ void FactorGraphCalibrator::outputTrajectory(const Epoch& from, const Epoch& to)
       pre.integrateSamples(in_.imu, from.t, next_output_);
       x = pre.predict(x0);
     }
-    TruthSample s;
-    s.t = std::max(next_output_, from.t);
-    const Geodetic g = geodeticFromEcef(frame_.ecefFromEnu(x.p_n_b));
-    s.lat_deg = g.lat * kRadToDeg;
-    s.lon_deg = g.lon * kRadToDeg;
-    s.h = g.h;
-    const Eigen::Matrix3d R_here_n = rotationEcefFromEnu(g.lat, g.lon).transpose() * frame_.R_e_n();
-    s.v_enu = R_here_n * x.v_n_b;
-    s.q_n_b = Eigen::Quaterniond(R_here_n * x.q_n_b.toRotationMatrix()).normalized();
-    run_.trajectory.push_back(s);
+    run_.trajectory.push_back(truthRow(frame_, x, std::max(next_output_, from.t)));
     next_output_ += 1.0 / o_.output_rate_hz;
   }
 }
@@ -640,21 +628,18 @@ CalibrationRun runFgoCalibration(const CalibrationInputs& in, const CalibrationO
                         {"heading_baseline_m", init->heading_baseline_m},
                         {"heading_sigma_deg", init->heading_sigma * kRadToDeg}};
   FactorGraphCalibrator graph(in, options, fgo_options, *init, run);
-  size_t k_base = 0;
+  BaseEpochMatcher matcher(in.base.epochs, options.max_base_offset);
   double epoch_time = 0.0;
   int solved = 0;
   for (const ObsEpoch& rover : in.rover.epochs) {
     if (rover.t <= graph.epochs().back().t + 1e-6 || rover.t > in.imu.back().t) continue;
-    while (k_base + 1 < in.base.epochs.size() && std::abs(in.base.epochs[k_base + 1].t - rover.t) <=
-                                                     std::abs(in.base.epochs[k_base].t - rover.t)) {
-      ++k_base;
-    }
-    if (std::abs(in.base.epochs[k_base].t - rover.t) > options.max_base_offset) {
+    const ObsEpoch* base = matcher.nearest(rover.t);
+    if (!base) {
       ++run.counters["gnss_without_base"];
       continue;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    const bool fixed = graph.addEpoch(rover, in.base.epochs[k_base]);
+    const bool fixed = graph.addEpoch(rover, *base);
     epoch_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ++solved;
     ++run.gnss_epochs;

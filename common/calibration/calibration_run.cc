@@ -23,6 +23,19 @@ nlohmann::json vec(const Eigen::VectorXd& v) {
 
 }  // namespace
 
+TruthSample truthRow(const LocalFrame& frame, const NavState& x, double t) {
+  TruthSample s;
+  s.t = t;
+  const Geodetic g = geodeticFromEcef(frame.ecefFromEnu(x.p_n_b));
+  s.lat_deg = g.lat * kRadToDeg;
+  s.lon_deg = g.lon * kRadToDeg;
+  s.h = g.h;
+  const Eigen::Matrix3d R_here_n = rotationEcefFromEnu(g.lat, g.lon).transpose() * frame.R_e_n();
+  s.v_enu = R_here_n * x.v_n_b;
+  s.q_n_b = Eigen::Quaterniond(R_here_n * x.q_n_b.toRotationMatrix()).normalized();
+  return s;
+}
+
 // Central differences: an output conversion, not an estimator Jacobian.
 Eigen::Matrix3d rpyTangentJacobian(const Eigen::Quaterniond& q) {
   Eigen::Matrix3d J;

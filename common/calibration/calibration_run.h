@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "common/geodesy/wgs84.h"
+#include "common/imu/nav_state.h"
 #include "common/io/dataset_description.h"
 #include "common/io/sensor_logs.h"
 #include "common/odometer/odometer_calibration.h"
@@ -64,6 +66,10 @@ CalibrationError calibrationError(const CalibrationEstimate& estimate,
 /// Writes the three output files into `folder` (created if needed), each atomically.
 void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
                          const OdometerCalibration* truth = nullptr);
+
+/// A navigation state of the local frame n (origin `frame`) as a truth.csv row: IMU origin in
+/// degrees and metres, velocity and attitude in the local-level ENU frame at that position.
+TruthSample truthRow(const LocalFrame& frame, const NavState& x, double t);
 
 /// d rpy(q Exp(theta)) / d theta (numeric): maps tangent covariances to roll/pitch/yaw and back.
 Eigen::Matrix3d rpyTangentJacobian(const Eigen::Quaterniond& q);

@@ -110,7 +110,8 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   RtkFilter filter(orbits, in.base_e, rtk);
   std::optional<AntennaFix> anchor;
   bool anchor_static = false;  // the anchor lies in the static window
-  size_t b = 0, k_imu = 0, k_odo = 0;
+  BaseEpochMatcher base(in.base.epochs, rtk.max_base_offset);
+  size_t k_imu = 0, k_odo = 0;
   // Dead reckoning from the anchor in a yaw-free frame: attitude from the gyro, displacement of
   // the vehicle origin from the odometer through the prior extrinsic and scale.
   Eigen::Matrix3d R0 = rotationFromRpy(Eigen::Vector3d(align.roll, align.pitch, 0.0));
@@ -120,12 +121,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   int good_epochs = 0;
   for (const ObsEpoch& e : in.rover.epochs) {
     if (e.t < t_anchor_min) continue;
-    while (b + 1 < in.base.epochs.size() &&
-           std::abs(in.base.epochs[b + 1].t - e.t) <= std::abs(in.base.epochs[b].t - e.t)) {
-      ++b;
-    }
-    const bool base_ok = std::abs(in.base.epochs[b].t - e.t) <= rtk.max_base_offset;
-    const RtkSolution sol = filter.process(e, base_ok ? &in.base.epochs[b] : nullptr);
+    const RtkSolution sol = filter.process(e, base.nearest(e.t));
     if (sol.quality != 1 && sol.quality != 2) continue;
     const Eigen::Matrix3d cov_n = base_frame.R_e_n().transpose() * sol.cov_e * base_frame.R_e_n();
     const AntennaFix fix{e.t, sol.p_e, std::sqrt(0.5 * (cov_n(0, 0) + cov_n(1, 1)))};

@@ -30,4 +30,10 @@ const SatObs* ObsEpoch::find(const SatId& sat) const {
   return nullptr;
 }
 
+const ObsEpoch* BaseEpochMatcher::nearest(double t) {
+  if (base_.empty()) return nullptr;
+  while (k_ + 1 < base_.size() && std::abs(base_[k_ + 1].t - t) <= std::abs(base_[k_].t - t)) ++k_;
+  return std::abs(base_[k_].t - t) <= max_offset_ ? &base_[k_] : nullptr;
+}
+
 }  // namespace giocal

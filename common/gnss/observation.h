@@ -56,4 +56,18 @@ struct ObsData {
   int skipped_special_records = 0;  // event-flag records (2-6) skipped
 };
 
+/// Pairs rover epochs, in time order, with the base epoch nearest in time.
+class BaseEpochMatcher {
+ public:
+  BaseEpochMatcher(const std::vector<ObsEpoch>& base, double max_offset)
+      : base_(base), max_offset_(max_offset) {}
+  /// The base epoch nearest t if within max_offset, else nullptr. Calls must come with t rising.
+  const ObsEpoch* nearest(double t);
+
+ private:
+  const std::vector<ObsEpoch>& base_;
+  double max_offset_;
+  size_t k_ = 0;
+};
+
 }  // namespace giocal

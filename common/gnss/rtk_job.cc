@@ -45,17 +45,9 @@ RtkSummary runRtk(const RtkJob& job, std::vector<RtkSolution>* out_solutions) {
   RtkFilter filter(orbits, base_e, job.options);
   std::vector<RtkSolution> sols;
   RtkSummary sum;
-  size_t b = 0;
+  BaseEpochMatcher matcher(base.epochs, job.options.max_base_offset);
   for (const ObsEpoch& e : rover.epochs) {
-    while (b + 1 < base.epochs.size() &&
-           std::abs(base.epochs[b + 1].t - e.t) <= std::abs(base.epochs[b].t - e.t)) {
-      ++b;
-    }
-    const ObsEpoch* be =
-        (!base.epochs.empty() && std::abs(base.epochs[b].t - e.t) <= job.options.max_base_offset)
-            ? &base.epochs[b]
-            : nullptr;
-    const RtkSolution s = filter.process(e, be);
+    const RtkSolution s = filter.process(e, matcher.nearest(e.t));
     ++sum.epochs;
     sum.fixed += s.quality == 1;
     sum.floats += s.quality == 2;

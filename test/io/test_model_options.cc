@@ -2,9 +2,9 @@
 
 #include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
-#include "fgo/fgo_options.h"
 #include "common/io/data_error.h"
 #include "common/io/model_options.h"
+#include "fgo/fgo_options.h"
 #include "temp_dir.h"
 
 namespace giocal {
