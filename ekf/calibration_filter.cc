@@ -12,6 +12,7 @@
 #include "common/models/heading_change_model.h"
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
+#include "common/models/planar_motion_projection.h"
 #include "common/models/zupt_model.h"
 #include "ekf/imu_propagation.h"
 
@@ -64,6 +65,12 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
   const double sd_lever = options.estimate_p_b_g ? options.p_b_g_sigma : 0.0;
   s_.add(vectorBlock(ekf_var::kPbg), dataset.p_b_g,
          Eigen::Matrix3d::Identity() * sd_lever * sd_lever);
+}
+
+std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
+    std::shared_ptr<const MeasurementModel> model) const {
+  if (!options_.hold_p_b_m_z) return model;
+  return std::make_shared<PlanarMotionProjection>(std::move(model));
 }
 
 std::vector<int> CalibrationFilter::heldIndices() const {
@@ -220,8 +227,8 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
     last_odo_ = sample;
     if (interval_done) {
       const UpdateResult r =
-          update(OdometerPreintegrationModel(
-                     std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))),
+          update(*planar(std::make_shared<OdometerPreintegrationModel>(
+                     std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_)))),
                  {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
                   block::kPbm, block::kQbm},
                  chi2_odometer_, 0.0, options_.odometer_iterations);
@@ -246,7 +253,7 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
   if (nhc) {
     // The mean rate over the window: a single noisy sample in the lever-arm term would bias the
     // extrinsic (errors in variables).
-    update(NhcModel(gyro.rate, options_.models.nhc_sigma),
+    update(*planar(std::make_shared<NhcModel>(gyro.rate, options_.models.nhc_sigma)),
            {nav_var::kV, nav_var::kQ, nav_var::kBg, block::kPbm, block::kQbm},
            chi2Quantile(options_.chi2_probability, 2), gyro.variance);
   }

@@ -79,6 +79,9 @@ class CalibrationFilter {
 
  private:
   std::vector<int> heldIndices() const;
+  /// With p_b_m.z held (planar motion), models of the vehicle's motion are made blind to p_b_m
+  /// along the vehicle's vertical axis (common/models/planar_motion_projection.h).
+  std::shared_ptr<const MeasurementModel> planar(std::shared_ptr<const MeasurementModel> m) const;
   void feedMotion(double t);  // bias-compensated IMU samples up to t into the motion detector
   /// The IMU preintegrated from time() to t; each sample is integrated once however often it
   /// is asked for (trajectory output, then the next update).

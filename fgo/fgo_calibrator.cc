@@ -24,6 +24,7 @@
 #include "common/models/imu_preintegration_model.h"
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
+#include "common/models/planar_motion_projection.h"
 #include "common/models/prior_model.h"
 #include "common/models/random_walk_model.h"
 #include "common/models/zupt_model.h"
@@ -104,6 +105,12 @@ class FactorGraphCalibrator {
   void record(const Epoch& e);
   void outputTrajectory(const Epoch& from, const Epoch& to);
   void marginalizeOldest();
+  /// With p_b_m.z held (planar motion), vehicle-motion factors are blind to p_b_m along the
+  /// vehicle's vertical axis (common/models/planar_motion_projection.h).
+  std::shared_ptr<const MeasurementModel> planar(std::shared_ptr<const MeasurementModel> m) const {
+    if (!o_.hold_p_b_m_z) return m;
+    return std::make_shared<PlanarMotionProjection>(std::move(m));
+  }
 
   const CalibrationInputs& in_;
   CalibrationOptions o_;
@@ -556,7 +563,7 @@ bool FactorGraphCalibrator::addEpoch(const ObsEpoch& rover, const ObsEpoch& base
       std::make_shared<OdometerPreintegration>(on, w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
   if (in_.odom.front().t <= prev.t) {
     odo->integrateSamples(in_.odom, prev.t, e.t);
-    w_.addFactor({std::make_shared<OdometerPreintegrationModel>(odo),
+    w_.addFactor({planar(std::make_shared<OdometerPreintegrationModel>(odo)),
                   {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm},
                   0.0,
                   tagged("odometer", e.k)});
@@ -585,7 +592,7 @@ bool FactorGraphCalibrator::addEpoch(const ObsEpoch& rover, const ObsEpoch& base
   if (motion_.nhcApplies()) {
     const GyroMean g = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                                 in_.description.imu_noise.gyro_noise_density);
-    w_.addFactor({std::make_shared<NhcModel>(g.rate, o_.models.nhc_sigma),
+    w_.addFactor({planar(std::make_shared<NhcModel>(g.rate, o_.models.nhc_sigma)),
                   {e.v, e.q, e.bg, kPbm, kQbm},
                   0.0,
                   "nhc"});

@@ -14,6 +14,7 @@
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/odometer_velocity_model.h"
+#include "common/models/planar_motion_projection.h"
 #include "common/models/prior_model.h"
 #include "common/models/zupt_model.h"
 #include "ekf/kalman_update.h"
@@ -133,6 +134,39 @@ TEST(MeasurementModels, EveryJacobianMatchesNumericDifferentiation) {
     ASSERT_EQ(C.rows(), model->residualSize()) << model->name();
     EXPECT_LT((C - C.transpose()).norm(), 1e-15) << model->name();
     EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(C).info(), Eigen::Success) << model->name();
+  }
+}
+
+TEST(PlanarMotionProjection, ResidualUnchangedAndBlindAlongTheVehicleVertical) {
+  for (const auto& model : allModels()) {
+    const auto& b = model->blocks();
+    const bool has =
+        std::any_of(b.begin(), b.end(),
+                    [](const StateBlock& x) { return x.name == block::kPbm; }) &&
+        std::any_of(b.begin(), b.end(), [](const StateBlock& x) { return x.name == block::kQbm; });
+    if (!has) {
+      EXPECT_THROW(PlanarMotionProjection{model}, std::invalid_argument) << model->name();
+      continue;
+    }
+    const PlanarMotionProjection projected(model);
+    const std::vector<Eigen::VectorXd> values = randomValues(*model);
+    Eigen::VectorXd r0, r1;
+    std::vector<Eigen::MatrixXd> J0, J1;
+    model->evaluate(test::pointers(values).data(), r0, &J0);
+    projected.evaluate(test::pointers(values).data(), r1, &J1);
+    EXPECT_EQ(r0, r1) << model->name();
+    for (size_t k = 0; k < b.size(); ++k) {
+      if (b[k].name == block::kQbm) {
+        const Vec3 u = quatFromWxyz(values[k].data()) * Vec3::UnitZ();
+        for (size_t p = 0; p < b.size(); ++p) {
+          if (b[p].name != block::kPbm) continue;
+          EXPECT_LT((J1[p] * u).norm(), 1e-12) << model->name();
+          // Moves across the vertical keep the model's own derivative.
+          const Vec3 across = u.cross(Vec3::UnitX()).normalized();
+          EXPECT_LT((J1[p] * across - J0[p] * across).norm(), 1e-12) << model->name();
+        }
+      }
+    }
   }
 }
 
