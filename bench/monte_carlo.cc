@@ -5,6 +5,7 @@
 // Usage: giocal_monte_carlo [--preset config/sim/paper.yaml] [--seeds 20] [--first 1]
 //                           [--config <yaml>] [--estimator ekf|fgo]
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -80,7 +81,9 @@ int main(int argc, char** argv) {
     }
   }
   std::map<std::string, Tally> tally;
-  const std::string work = std::filesystem::temp_directory_path() / "giocal_monte_carlo";
+  // One directory per process, so that runs in parallel do not overwrite each other's datasets.
+  const std::string work =
+      std::filesystem::temp_directory_path() / ("giocal_monte_carlo_" + std::to_string(::getpid()));
   std::printf("%-6s %-4s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
               "roll", "pitch", "yaw", "s_v", "s_w", "NEES7", "fix%", "wall s");
   for (int seed = first; seed < first + seeds; ++seed) {

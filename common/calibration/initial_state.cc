@@ -100,6 +100,17 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   StaticAlignment align = alignStatic(window, 0.0, base_frame.omega_ie_n(),
                                       noise.gyro_noise_density, noise.accel_noise_density);
   if (!have_static) align.b_g.setZero();
+  if (have_static && noise.gyro_bias_sigma > 0.0) {
+    // The static mean is one measurement of the bias; the turn-on prior (mean 0) is another. For a
+    // good gyro the prior is the tighter of the two, and it is what separates the heading from
+    // the tilt and the horizontal bias in a steady turn.
+    for (int i = 0; i < 3; ++i) {
+      const double w_prior = 1.0 / (noise.gyro_bias_sigma * noise.gyro_bias_sigma);
+      const double w_static = 1.0 / std::max(align.sd_b_g[i] * align.sd_b_g[i], 1e-20);
+      align.b_g[i] *= w_static / (w_static + w_prior);
+      align.sd_b_g[i] = 1.0 / std::sqrt(w_static + w_prior);
+    }
+  }
   const double t_anchor_min = have_static ? ts0 : t_from;
 
   // RTK antenna positions epoch by epoch until the displacement fixes the heading.
@@ -236,7 +247,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     const double sd_vel = anchor_static ? options.models.zupt_sigma
                                         : io.velocity_sigma + std::abs(v_odo) * std::sqrt(var_yaw);
     const Eigen::Vector3d sd_bg =
-        have_static ? Eigen::Vector3d(align.sd_b_g.cwiseMax(1e-5))
+        have_static ? Eigen::Vector3d(align.sd_b_g.cwiseMax(1e-7))
                     : Eigen::Vector3d(Eigen::Vector3d::Constant(noise.gyro_bias_sigma));
     auto& P = s.P_nav;
     P.block<3, 3>(0, 0) = Eigen::Matrix3d::Identity() * sd_pos * sd_pos;
