@@ -100,17 +100,9 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   StaticAlignment align = alignStatic(window, 0.0, base_frame.omega_ie_n(),
                                       noise.gyro_noise_density, noise.accel_noise_density);
   if (!have_static) align.b_g.setZero();
-  if (have_static && noise.gyro_bias_sigma > 0.0) {
-    // The static mean is one measurement of the bias; the turn-on prior (mean 0) is another. For a
-    // good gyro the prior is the tighter of the two, and it is what separates the heading from
-    // the tilt and the horizontal bias in a steady turn.
-    for (int i = 0; i < 3; ++i) {
-      const double w_prior = 1.0 / (noise.gyro_bias_sigma * noise.gyro_bias_sigma);
-      const double w_static = 1.0 / std::max(align.sd_b_g[i] * align.sd_b_g[i], 1e-20);
-      align.b_g[i] *= w_static / (w_static + w_prior);
-      align.sd_b_g[i] = 1.0 / std::sqrt(w_static + w_prior);
-    }
-  }
+  // The static mean is one measurement of the bias, the turn-on prior another; for a good gyro
+  // the prior is the tighter of the two.
+  if (have_static) align = withGyroBiasPrior(align, noise.gyro_bias_sigma);
   const double t_anchor_min = have_static ? ts0 : t_from;
 
   // RTK antenna positions epoch by epoch until the displacement fixes the heading.

@@ -1,5 +1,6 @@
 #include "common/imu/static_alignment.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -31,6 +32,17 @@ StaticAlignment alignStatic(const std::vector<ImuSample>& window, double yaw,
   const double span = std::max(T, 1e-3);
   a.sd_b_g = Eigen::Vector3d::Constant(gyro_noise_density / std::sqrt(span));
   a.sd_tilt = accel_noise_density / std::sqrt(span) / std::max(f.norm(), 1e-6);
+  return a;
+}
+
+StaticAlignment withGyroBiasPrior(StaticAlignment a, double prior_sigma) {
+  if (!(prior_sigma > 0.0)) return a;
+  const double w_prior = 1.0 / (prior_sigma * prior_sigma);
+  for (int i = 0; i < 3; ++i) {
+    const double w_static = 1.0 / std::max(a.sd_b_g[i] * a.sd_b_g[i], 1e-20);
+    a.b_g[i] *= w_static / (w_static + w_prior);
+    a.sd_b_g[i] = 1.0 / std::sqrt(w_static + w_prior);
+  }
   return a;
 }
 

@@ -25,4 +25,9 @@ StaticAlignment alignStatic(const std::vector<ImuSample>& window, double yaw,
                             const Eigen::Vector3d& omega_ie_n, double gyro_noise_density,
                             double accel_noise_density);
 
+/// Combines the alignment's gyro bias (a measurement from the static mean) with a turn-on prior
+/// of mean zero and 1-sigma `prior_sigma` [rad/s] per axis: the minimum-variance combination of
+/// the two. A prior_sigma of zero or less means "no prior" and leaves the alignment unchanged.
+StaticAlignment withGyroBiasPrior(StaticAlignment a, double prior_sigma);
+
 }  // namespace giocal

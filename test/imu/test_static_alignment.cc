@@ -33,5 +33,25 @@ TEST(StaticAlignment, RecoversTiltAndGyroBiasOfTheSimulatedPaperPreset) {
   EXPECT_THROW(alignStatic({}, 0, Vec3::Zero(), 0, 0), std::invalid_argument);
 }
 
+TEST(StaticAlignment, GyroBiasPriorCombinesByInverseVariance) {
+  StaticAlignment a;
+  a.b_g = Vec3(0.01, -0.02, 0.03);
+  a.sd_b_g = Vec3(0.001, 0.002, 0.004);
+  const StaticAlignment f = withGyroBiasPrior(a, 0.002);
+  for (int i = 0; i < 3; ++i) {
+    const double wp = 1.0 / (0.002 * 0.002), ws = 1.0 / (a.sd_b_g[i] * a.sd_b_g[i]);
+    EXPECT_NEAR(f.b_g[i], a.b_g[i] * ws / (ws + wp), 1e-15) << i;
+    EXPECT_NEAR(f.sd_b_g[i], 1.0 / std::sqrt(ws + wp), 1e-15) << i;
+    EXPECT_LT(f.sd_b_g[i], std::min(a.sd_b_g[i], 0.002)) << i;
+  }
+  // Equal sigmas: halfway to the prior's zero mean, sigma / sqrt(2).
+  EXPECT_NEAR(f.b_g[1], -0.01, 1e-15);
+  EXPECT_NEAR(f.sd_b_g[1], 0.002 / std::sqrt(2.0), 1e-15);
+  // No prior: unchanged.
+  const StaticAlignment u = withGyroBiasPrior(a, 0.0);
+  EXPECT_EQ(u.b_g, a.b_g);
+  EXPECT_EQ(u.sd_b_g, a.sd_b_g);
+}
+
 }  // namespace
 }  // namespace giocal
