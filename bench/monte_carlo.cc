@@ -4,6 +4,8 @@
 // calibration errors", the mean NEES of the seven observable calibration states, and timing.
 // Usage: giocal_monte_carlo [--preset config/sim/paper.yaml] [--seeds 20] [--first 1]
 //                           [--config <yaml>] [--estimator ekf|fgo]
+//                           [--arw-deg-sqrt-h A] [--gyro-bias-deg-h B]   (override the preset's
+//                           gyro)
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -47,6 +49,7 @@ int main(int argc, char** argv) {
   std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
   int seeds = 20, first = 1;
   std::string config;
+  double arw = -1.0, gyro_bias = -1.0;  // negative: the preset's
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--preset")
@@ -57,6 +60,10 @@ int main(int argc, char** argv) {
       first = std::stoi(v);
     else if (k == "--config")
       config = v;
+    else if (k == "--arw-deg-sqrt-h")
+      arw = std::stod(v);
+    else if (k == "--gyro-bias-deg-h")
+      gyro_bias = std::stod(v);
     else if (k == "--estimator")
       continue;  // read below
     else {
@@ -64,7 +71,9 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
+  giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
+  if (arw >= 0.0) cfg.imu.arw_deg_sqrt_h = arw;
+  if (gyro_bias >= 0.0) cfg.imu.gyro_bias_deg_h = gyro_bias;
   const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
   const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
   std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
@@ -135,7 +144,10 @@ int main(int argc, char** argv) {
     }
   }
   std::filesystem::remove_all(work);
-  std::printf("\nMean absolute calibration errors over %d seeds (%s)\n", seeds, preset.c_str());
+  std::printf(
+      "\nMean absolute calibration errors over %d seeds (%s; gyro ARW %g deg/sqrt(h), bias %g "
+      "deg/h)\n",
+      seeds, preset.c_str(), cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h);
   std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",
               "roll deg", "pitch", "yaw", "V scale", "W scale", "NEES7", "fix %", "x real");
   std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.1e %10.1e |\n", "paper TC", 0.06, 0.05, 0.24,
