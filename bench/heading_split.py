@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Splits an EKF run's heading error into the IMU heading and the extrinsic yaw, every 10 s.
+"""Splits an EKF run's heading error into the IMU heading and the extrinsic yaw, every <step> s.
 
 Usage: python3 bench/heading_split.py <dataset dir> [<calibrate output dir>, default <dataset>/ekf]
+                                      [<step s>, default 10]
 Needs truth.csv and truth_calib.yaml in the dataset (simulated data). Prints the IMU heading error
 (trajectory.csv against truth.csv) beside the extrinsic yaw error and its 1-sigma
 (calibration.csv); they cancel when the vehicle heading is right and only the split is wrong.
@@ -24,6 +25,7 @@ def rows(path):
 def main():
     data = sys.argv[1]
     out = sys.argv[2] if len(sys.argv) > 2 else data + "/ekf"
+    step = float(sys.argv[3]) if len(sys.argv) > 3 else 10.0
     true_yaw = float(re.search(r"rpy_b_m_deg:\s*\[[^,]+,[^,]+,([^\]]+)\]",
                                open(data + "/truth_calib.yaml").read()).group(1))
     quat = ("qw", "qx", "qy", "qz")
@@ -36,7 +38,7 @@ def main():
     for r in rows(out + "/trajectory.csv"):
         t = round(float(r["t"]), 2)
         t0 = t if t0 is None else t0
-        if (t - t0) % 10 != 0 or t not in truth or t not in calib:
+        if (t - t0) % step != 0 or t not in truth or t not in calib:
             continue
         e = (yaw_deg(*(float(r[k]) for k in quat)) - truth[t] + 180) % 360 - 180
         print("%6.0f  %19.3f  %21.3f  %9.2f" % (t - t0, e, calib[t][0] - true_yaw, calib[t][1]))

@@ -5,7 +5,8 @@
 // Usage: giocal_monte_carlo [--preset config/sim/paper.yaml] [--seeds 20] [--first 1]
 //                           [--config <yaml>] [--estimator ekf|fgo]
 //                           [--arw-deg-sqrt-h A] [--gyro-bias-deg-h B]   (override the preset's
-//                           gyro)
+//                           gyro) [--guess-at-truth 1]   (start from the true calibration,
+//                           keeping the prior sigma: a diagnostic of linearization, see README)
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
   int seeds = 20, first = 1;
   std::string config;
   double arw = -1.0, gyro_bias = -1.0;  // negative: the preset's
+  bool guess_at_truth = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--preset")
@@ -64,6 +66,8 @@ int main(int argc, char** argv) {
       arw = std::stod(v);
     else if (k == "--gyro-bias-deg-h")
       gyro_bias = std::stod(v);
+    else if (k == "--guess-at-truth")
+      guess_at_truth = std::stoi(v) != 0;
     else if (k == "--estimator")
       continue;  // read below
     else {
@@ -101,7 +105,8 @@ int main(int argc, char** argv) {
     const giocal::sim::SimulatedLogs logs =
         giocal::sim::simulate(cfg, static_cast<std::uint64_t>(seed));
     giocal::sim::writeDataset(logs, work);
-    const giocal::CalibrationInputs in = giocal::loadCalibrationInputs(work);
+    giocal::CalibrationInputs in = giocal::loadCalibrationInputs(work);
+    if (guess_at_truth) in.description.initial_calibration.mean = in.truth->calib;
     for (const auto& [name, run] : estimators) {
       Tally& t = tally[name];
       giocal::CalibrationRun r;
