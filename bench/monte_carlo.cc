@@ -151,8 +151,9 @@ int main(int argc, char** argv) {
   std::filesystem::remove_all(work);
   std::printf(
       "\nMean absolute calibration errors over %d seeds (%s; gyro ARW %g deg/sqrt(h), bias %g "
-      "deg/h)\n",
-      seeds, preset.c_str(), cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h);
+      "deg/h%s)\n",
+      seeds, preset.c_str(), cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
+      guess_at_truth ? "; initial guess at the truth" : "");
   std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",
               "roll deg", "pitch", "yaw", "V scale", "W scale", "NEES7", "fix %", "x real");
   std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.1e %10.1e |\n", "paper TC", 0.06, 0.05, 0.24,
