@@ -22,8 +22,7 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
   }
   const CalibrationEstimate& e = run.history.back();
   const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
-  const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
-  const auto sd = [&](int i) { return std::sqrt(std::max(0.0, e.cov(i, i))); };
+  const Eigen::Matrix<double, 8, 1> sd = e.sigma();
   CalibrationError err;
   if (truth) err = calibrationError(e, *truth);
   out << std::fixed;
@@ -34,13 +33,12 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
     out << "\n";
   };
   out << run.estimator << " calibration at t=" << std::setprecision(2) << e.t << ":\n";
-  row("s_v", e.calib.s_v, sd(calib_index::kSv), err.s_v, 5);
-  row("s_w", e.calib.s_w, sd(calib_index::kSw), err.s_w, 5);
+  row("s_v", e.calib.s_v, sd[0], err.s_v, 5);
+  row("s_w", e.calib.s_w, sd[1], err.s_w, 5);
   const char* pn[3] = {"p_b_m.x m", "p_b_m.y m", "p_b_m.z m"};
-  for (int k = 0; k < 3; ++k)
-    row(pn[k], e.calib.p_b_m[k], sd(calib_index::kP + k), err.p_b_m[k], 4);
+  for (int k = 0; k < 3; ++k) row(pn[k], e.calib.p_b_m[k], sd[2 + k], err.p_b_m[k], 4);
   const char* rn[3] = {"roll deg", "pitch deg", "yaw deg"};
-  for (int k = 0; k < 3; ++k) row(rn[k], rpy[k], sd_rpy[k], err.rpy[k] * kRadToDeg, 3);
+  for (int k = 0; k < 3; ++k) row(rn[k], rpy[k], sd[5 + k], err.rpy[k] * kRadToDeg, 3);
   if (truth) out << "  NEES (7 observable states) " << std::setprecision(2) << err.nees7 << "\n";
   out << "  p_b_m.z: " << run.p_b_m_z << "\n";
   out << std::setprecision(1) << "  GNSS epochs " << run.gnss_epochs << ", fix rate "

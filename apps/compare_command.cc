@@ -54,13 +54,12 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   for (int a = 0; a < 2; ++a) {
     const CalibrationEstimate& e = runs[a].history.back();
     const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
-    const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
+    const Eigen::Matrix<double, 8, 1> sd = e.sigma();
     const double v[8] = {e.calib.s_v,       e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
                          e.calib.p_b_m.z(), rpy.x(),     rpy.y(),           rpy.z()};
     for (int i = 0; i < 8; ++i) {
       rows[static_cast<size_t>(i)].value[a] = v[i];
-      rows[static_cast<size_t>(i)].sd[a] =
-          i < 5 ? std::sqrt(std::max(0.0, e.cov(i, i))) : sd_rpy[i - 5];
+      rows[static_cast<size_t>(i)].sd[a] = sd[i];
       rows[static_cast<size_t>(i)].error[a] = NAN;
     }
     if (truth) {

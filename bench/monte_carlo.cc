@@ -127,16 +127,8 @@ int main(int argc, char** argv) {
                            e.s_v,
                            e.s_w};
       for (int k = 0; k < 7; ++k) t.abs[k].push_back(std::abs(v[k]));
-      const giocal::CalibrationEstimate& last = r.history.back();
-      const Eigen::Vector3d sd_rpy = last.rpySigma() * giocal::kRadToDeg;
-      namespace ci = giocal::calib_index;
-      const double sd[7] = {std::sqrt(last.cov(ci::kP, ci::kP)),
-                            std::sqrt(last.cov(ci::kP + 1, ci::kP + 1)),
-                            sd_rpy.x(),
-                            sd_rpy.y(),
-                            sd_rpy.z(),
-                            std::sqrt(last.cov(ci::kSv, ci::kSv)),
-                            std::sqrt(last.cov(ci::kSw, ci::kSw))};
+      const Eigen::Matrix<double, 8, 1> s = r.history.back().sigma();
+      const double sd[7] = {s[2], s[3], s[5], s[6], s[7], s[0], s[1]};  // the order of v
       for (int k = 0; k < 7; ++k) t.z2[k].push_back(std::pow(v[k] / sd[k], 2));
       t.nees.push_back(e.nees7);
       t.wall.push_back(r.wall_time_s);

@@ -56,6 +56,13 @@ Eigen::Vector3d CalibrationEstimate::rpySigma() const {
   return C.diagonal().cwiseMax(0.0).cwiseSqrt();
 }
 
+Eigen::Matrix<double, 8, 1> CalibrationEstimate::sigma() const {
+  Eigen::Matrix<double, 8, 1> sd;
+  sd.head<5>() = cov.diagonal().head<5>().cwiseMax(0.0).cwiseSqrt();
+  sd.tail<3>() = rpySigma() * kRadToDeg;
+  return sd;
+}
+
 CalibrationError calibrationError(const CalibrationEstimate& e, const OdometerCalibration& truth) {
   CalibrationError err;
   err.s_v = e.calib.s_v - truth.s_v;
@@ -89,12 +96,10 @@ void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
   std::vector<std::vector<double>> rows;
   for (const CalibrationEstimate& e : run.history) {
     const Eigen::Vector3d rpy = rpyDeg(e.calib.q_b_m);
-    const Eigen::Vector3d sd_rpy = e.rpySigma() * kRadToDeg;
-    const auto sd = [&](int i) { return std::sqrt(std::max(0.0, e.cov(i, i))); };
+    const Eigen::Matrix<double, 8, 1> sd = e.sigma();
     rows.push_back({e.t, e.calib.s_v, e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
-                    e.calib.p_b_m.z(), rpy.x(), rpy.y(), rpy.z(), sd(calib_index::kSv),
-                    sd(calib_index::kSw), sd(calib_index::kP), sd(calib_index::kP + 1),
-                    sd(calib_index::kP + 2), sd_rpy.x(), sd_rpy.y(), sd_rpy.z()});
+                    e.calib.p_b_m.z(), rpy.x(), rpy.y(), rpy.z(), sd[0], sd[1], sd[2], sd[3], sd[4],
+                    sd[5], sd[6], sd[7]});
   }
   writeCsvTable(folder + "/calibration.csv",
                 {"t", "s_v", "s_w", "px", "py", "pz", "roll", "pitch", "yaw", "sd_s_v", "sd_s_w",
@@ -112,10 +117,11 @@ void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
                   {"p_b_m", vec(e.calib.p_b_m)},
                   {"q_b_m", {q.w(), q.x(), q.y(), q.z()}},
                   {"rpy_b_m_deg", vec(rpyDeg(q))}};
-    j["sd"] = {{"s_v", std::sqrt(e.cov(0, 0))},
-               {"s_w", std::sqrt(e.cov(1, 1))},
-               {"p_b_m", vec(e.cov.diagonal().segment<3>(calib_index::kP).cwiseSqrt())},
-               {"rpy_b_m_deg", vec(e.rpySigma() * kRadToDeg)}};
+    const Eigen::Matrix<double, 8, 1> sd = e.sigma();
+    j["sd"] = {{"s_v", sd[0]},
+               {"s_w", sd[1]},
+               {"p_b_m", vec(sd.segment<3>(2))},
+               {"rpy_b_m_deg", vec(sd.tail<3>())}};
   } else {
     j["final"] = nullptr;
     j["sd"] = nullptr;

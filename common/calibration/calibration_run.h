@@ -29,6 +29,9 @@ struct CalibrationEstimate {
 
   /// 1-sigma of roll, pitch and yaw of R_b_m [rad], mapped from the tangent covariance.
   Eigen::Vector3d rpySigma() const;
+  /// 1-sigma of s_v, s_w, p_b_m (x, y, z) [m], roll, pitch, yaw [deg]: the order of
+  /// calibration.csv.
+  Eigen::Matrix<double, 8, 1> sigma() const;
 };
 
 struct CalibrationRun {

@@ -144,5 +144,18 @@ TEST(CalibrationRun, WritesTheBriefsFilesAndKeys) {
   EXPECT_EQ(header, "t,lat,lon,h,ve,vn,vu,qw,qx,qy,qz");
 }
 
+TEST(CalibrationEstimate, SigmaIsTheCsvOrderInMetresAndDegrees) {
+  CalibrationEstimate e;
+  e.calib.q_b_m = Eigen::Quaterniond(rotationFromRpy(Vec3(1, -2, 3) * kDegToRad));
+  Eigen::Matrix<double, 8, 1> var;
+  var << 1e-6, 4e-6, 9e-4, 1.6e-3, 2.5e-3, 1e-4, 4e-4, 9e-4;
+  e.cov = var.asDiagonal();
+  const Eigen::Matrix<double, 8, 1> sd = e.sigma();
+  for (int i = 0; i < 5; ++i) EXPECT_DOUBLE_EQ(sd[i], std::sqrt(var[i])) << i;
+  for (int i = 0; i < 3; ++i) EXPECT_DOUBLE_EQ(sd[5 + i], e.rpySigma()[i] * kRadToDeg) << i;
+  // Near-level attitude: the yaw sigma is the tangent z sigma, 0.03 rad.
+  EXPECT_NEAR(sd[7], 0.03 * kRadToDeg, 0.05);
+}
+
 }  // namespace
 }  // namespace giocal
