@@ -21,6 +21,7 @@
 
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
+#include "common/calibration/initial_state.h"
 #include "common/math/rotation.h"
 #include "ekf/ekf_calibrator.h"
 #include "fgo/fgo_calibrator.h"
@@ -98,8 +99,35 @@ int main(int argc, char** argv) {
   // One directory per process, so that runs in parallel do not overwrite each other's datasets.
   const std::string work =
       std::filesystem::temp_directory_path() / ("giocal_monte_carlo_" + std::to_string(::getpid()));
-  std::printf("%-6s %-4s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
+  std::printf("%-6s %-5s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
               "roll", "pitch", "yaw", "s_v", "s_w", "NEES7", "fix%", "wall s");
+  // Adds one final estimate to a scheme's tally and prints its row.
+  auto score = [&](int seed, const std::string& name, const giocal::CalibrationEstimate& est,
+                   const giocal::OdometerCalibration& truth, const giocal::CalibrationRun* r) {
+    Tally& t = tally[name];
+    const giocal::CalibrationError e = giocal::calibrationError(est, truth);
+    const double v[7] = {e.p_b_m.x(),
+                         e.p_b_m.y(),
+                         e.rpy.x() * giocal::kRadToDeg,
+                         e.rpy.y() * giocal::kRadToDeg,
+                         e.rpy.z() * giocal::kRadToDeg,
+                         e.s_v,
+                         e.s_w};
+    for (int k = 0; k < 7; ++k) t.abs[k].push_back(std::abs(v[k]));
+    const Eigen::Matrix<double, 8, 1> s = est.sigma();
+    const double sd[7] = {s[2], s[3], s[5], s[6], s[7], s[0], s[1]};  // the order of v
+    for (int k = 0; k < 7; ++k) t.z2[k].push_back(std::pow(v[k] / sd[k], 2));
+    t.nees.push_back(e.nees7);
+    if (r) {
+      t.wall.push_back(r->wall_time_s);
+      if (r->timing.count("mean_epoch_s")) t.epoch.push_back(r->timing.at("mean_epoch_s"));
+      t.rtf.push_back(r->data_duration_s / r->wall_time_s);
+      t.fix.push_back(100.0 * r->fixRate());
+    }
+    std::printf("%-6d %-5s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n", seed,
+                name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], e.nees7,
+                r ? 100.0 * r->fixRate() : NAN, r ? r->wall_time_s : NAN);
+  };
   for (int seed = first; seed < first + seeds; ++seed) {
     std::filesystem::remove_all(work);
     const giocal::sim::SimulatedLogs logs =
@@ -107,37 +135,21 @@ int main(int argc, char** argv) {
     giocal::sim::writeDataset(logs, work);
     giocal::CalibrationInputs in = giocal::loadCalibrationInputs(work);
     if (guess_at_truth) in.description.initial_calibration.mean = in.truth->calib;
+    // The initial guess with its prior sigma: the baseline that the data must improve on.
+    giocal::CalibrationEstimate guess;
+    guess.calib = in.description.initial_calibration.mean;
+    guess.cov = giocal::priorCalibrationCovariance(in.description.initial_calibration);
+    score(seed, "guess", guess, in.truth->calib, nullptr);
     for (const auto& [name, run] : estimators) {
-      Tally& t = tally[name];
       giocal::CalibrationRun r;
       try {
         r = run(in, options);
       } catch (const std::exception& e) {
         std::printf("%-6d %-4s failed: %s\n", seed, name.c_str(), e.what());
-        ++t.failures;
+        ++tally[name].failures;
         continue;
       }
-      const giocal::CalibrationError e =
-          giocal::calibrationError(r.history.back(), in.truth->calib);
-      const double v[7] = {e.p_b_m.x(),
-                           e.p_b_m.y(),
-                           e.rpy.x() * giocal::kRadToDeg,
-                           e.rpy.y() * giocal::kRadToDeg,
-                           e.rpy.z() * giocal::kRadToDeg,
-                           e.s_v,
-                           e.s_w};
-      for (int k = 0; k < 7; ++k) t.abs[k].push_back(std::abs(v[k]));
-      const Eigen::Matrix<double, 8, 1> s = r.history.back().sigma();
-      const double sd[7] = {s[2], s[3], s[5], s[6], s[7], s[0], s[1]};  // the order of v
-      for (int k = 0; k < 7; ++k) t.z2[k].push_back(std::pow(v[k] / sd[k], 2));
-      t.nees.push_back(e.nees7);
-      t.wall.push_back(r.wall_time_s);
-      if (r.timing.count("mean_epoch_s")) t.epoch.push_back(r.timing.at("mean_epoch_s"));
-      t.rtf.push_back(r.data_duration_s / r.wall_time_s);
-      t.fix.push_back(100.0 * r.fixRate());
-      std::printf("%-6d %-4s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n", seed,
-                  name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], e.nees7,
-                  100.0 * r.fixRate(), r.wall_time_s);
+      score(seed, name, r.history.back(), in.truth->calib, &r);
     }
   }
   std::filesystem::remove_all(work);
@@ -152,9 +164,9 @@ int main(int argc, char** argv) {
               0.05, 3.29, 6.0e-4, 3.1e-3);
   for (const auto& [name, t] : tally) {
     std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e | %8.2f %8.1f %9.0f\n",
-                ("giocal " + name).c_str(), mean(t.abs[0]), mean(t.abs[1]), mean(t.abs[2]),
-                mean(t.abs[3]), mean(t.abs[4]), mean(t.abs[5]), mean(t.abs[6]), mean(t.nees),
-                mean(t.fix), mean(t.rtf));
+                (name == "guess" ? "guess" : "giocal " + name).c_str(), mean(t.abs[0]),
+                mean(t.abs[1]), mean(t.abs[2]), mean(t.abs[3]), mean(t.abs[4]), mean(t.abs[5]),
+                mean(t.abs[6]), mean(t.nees), mean(t.fix), mean(t.rtf));
     double rms_z[7];
     for (int k = 0; k < 7; ++k) rms_z[k] = std::sqrt(mean(t.z2[k]));
     std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.2f %10.2f |\n", "  err/sigma", rms_z[0],
