@@ -10,6 +10,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -33,8 +34,9 @@ using Runner = std::function<giocal::CalibrationRun(const giocal::CalibrationInp
                                                     const giocal::CalibrationOptions&)>;
 
 struct Tally {
-  std::vector<double> abs[7];  // X, Y, roll, pitch, yaw, s_v, s_w
-  std::vector<double> z2[7];   // (error / reported sigma)^2 of the same
+  std::vector<double> abs[7];                         // X, Y, roll, pitch, yaw, s_v, s_w
+  std::vector<double> z2[7];                          // (error / reported sigma)^2 of the same
+  std::map<int, std::array<double, 7>> error, sigma;  // signed final error and 1-sigma per seed
   std::vector<double> nees, wall, rtf, fix, epoch;
   int failures = 0;
 };
@@ -43,6 +45,32 @@ double mean(const std::vector<double>& v) {
   double s = 0;
   for (double x : v) s += x;
   return v.empty() ? NAN : s / static_cast<double>(v.size());
+}
+
+/// The reported final sigma against the one implied by how much the final errors still follow
+/// the guess's errors: for a linear-Gaussian estimator, final = (P / P0) guess + noise.
+struct Implied {
+  double reported[7], b[7], implied[7];
+};
+Implied impliedSigma(const Tally& t, const Tally& guess) {
+  Implied out{};
+  for (size_t k = 0; k < 7; ++k) {
+    double eg = 0, gg = 0, s2 = 0, p2 = 0;
+    int n = 0;
+    for (const auto& [seed, e] : t.error) {
+      const auto g = guess.error.find(seed);
+      if (g == guess.error.end()) continue;
+      eg += e[k] * g->second[k];
+      gg += g->second[k] * g->second[k];
+      s2 += std::pow(t.sigma.at(seed)[k], 2);
+      p2 += std::pow(guess.sigma.at(seed)[k], 2);
+      ++n;
+    }
+    out.reported[k] = n ? std::sqrt(s2 / n) : NAN;
+    out.b[k] = gg > 0 ? eg / gg : NAN;
+    out.implied[k] = n ? std::sqrt(p2 / n * std::max(out.b[k], 0.0)) : NAN;
+  }
+  return out;
 }
 
 }  // namespace
@@ -116,7 +144,11 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 7; ++k) t.abs[k].push_back(std::abs(v[k]));
     const Eigen::Matrix<double, 8, 1> s = est.sigma();
     const double sd[7] = {s[2], s[3], s[5], s[6], s[7], s[0], s[1]};  // the order of v
-    for (int k = 0; k < 7; ++k) t.z2[k].push_back(std::pow(v[k] / sd[k], 2));
+    for (int k = 0; k < 7; ++k) {
+      t.z2[k].push_back(std::pow(v[k] / sd[k], 2));
+      t.error[seed][static_cast<size_t>(k)] = v[k];
+      t.sigma[seed][static_cast<size_t>(k)] = sd[k];
+    }
     t.nees.push_back(e.nees7);
     if (r) {
       t.wall.push_back(r->wall_time_s);
@@ -171,6 +203,17 @@ int main(int argc, char** argv) {
     for (int k = 0; k < 7; ++k) rms_z[k] = std::sqrt(mean(t.z2[k]));
     std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.2f %10.2f |\n", "  err/sigma", rms_z[0],
                 rms_z[1], rms_z[2], rms_z[3], rms_z[4], rms_z[5], rms_z[6]);
+    if (name != "guess" && !guess_at_truth && tally.count("guess")) {
+      const Implied im = impliedSigma(t, tally.at("guess"));
+      std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e |\n", "  sigma",
+                  im.reported[0], im.reported[1], im.reported[2], im.reported[3], im.reported[4],
+                  im.reported[5], im.reported[6]);
+      std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.2f %10.2f |\n", "  b", im.b[0], im.b[1],
+                  im.b[2], im.b[3], im.b[4], im.b[5], im.b[6]);
+      std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e |\n", "  implied",
+                  im.implied[0], im.implied[1], im.implied[2], im.implied[3], im.implied[4],
+                  im.implied[5], im.implied[6]);
+    }
     if (!t.epoch.empty())
       std::printf("  %s: mean solve time per GNSS epoch %.1f ms\n", name.c_str(),
                   1e3 * mean(t.epoch));
@@ -180,7 +223,11 @@ int main(int argc, char** argv) {
       "NEES7: mean over seeds of the normalized error of the 7 observable states (X, Y, "
       "roll, pitch, yaw, s_v, s_w); consistent near 7 (95%% of single runs below 14.1).\n"
       "err/sigma: RMS over seeds of each final error divided by its reported 1-sigma; consistent "
-      "near 1.\n");
+      "near 1.\n"
+      "sigma: RMS over seeds of the reported final 1-sigma. b: least-squares slope of the final "
+      "error on the guess's error over the seeds (0: the data decide, 1: the guess does).\n"
+      "implied: prior sigma x sqrt(b), the final sigma of an efficient linear-Gaussian estimator "
+      "with that slope; a check of the reported sigma where b is well above 0.\n");
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
   std::printf("peak memory of this process: %.1f MiB\n",
