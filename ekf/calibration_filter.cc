@@ -13,6 +13,7 @@
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
+#include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
 #include "ekf/imu_propagation.h"
 
@@ -52,6 +53,7 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
 
   const CalibrationPrior& prior = dataset.initial_calibration;
   const Eigen::Matrix<double, 8, 8> Pc = priorCalibrationCovariance(prior);
+  prior_calibration_cov_ = Pc;
   Eigen::VectorXd qbm(4);
   quatToWxyz(prior.mean.q_b_m, qbm.data());
   s_.add(vectorBlock(block::kSv, 1), Eigen::VectorXd::Constant(1, prior.mean.s_v), blk(Pc, 0, 1));
@@ -71,6 +73,22 @@ std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
     std::shared_ptr<const MeasurementModel> model) const {
   if (!options_.hold_p_b_m_z) return model;
   return std::make_shared<PlanarMotionProjection>(std::move(model));
+}
+
+void CalibrationFilter::reopenCalibration() {
+  // Adding the prior covariance keeps P positive semi-definite and the correlations; the held
+  // p_b_m.z keeps its prior variance.
+  Eigen::Matrix<double, 8, 8> add = prior_calibration_cov_;
+  if (options_.hold_p_b_m_z) add(calib_index::kP + 2, calib_index::kP + 2) = 0.0;
+  add.topLeftCorner(2, 2).setZero();
+  const int idx[4] = {s_.offset(block::kSv), s_.offset(block::kSw), s_.offset(block::kPbm),
+                      s_.offset(block::kQbm)};
+  const int start[4] = {calib_index::kSv, calib_index::kSw, calib_index::kP, calib_index::kTheta};
+  const int size[4] = {1, 1, 3, 3};
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b)
+      s_.covariance().block(idx[a], idx[b], size[a], size[b]) +=
+          add.block(start[a], start[b], size[a], size[b]);
 }
 
 std::vector<int> CalibrationFilter::heldIndices() const {
@@ -202,20 +220,22 @@ void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
   odo_pre_ = std::make_unique<OdometerPreintegration>(noise, s_.value(block::kSv)[0],
                                                       s_.value(block::kSw)[0]);
   last_odo_ = sample;
+  interval_moved_ = false;
 }
 
-bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
+OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
   // The covariance moves only when something updates it: the end of an odometer interval, a
   // motion constraint, or a new clone. Between those the samples are only preintegrated.
   feedMotion(sample.t);
   motion_.addOdometer(sample.t, sample.v);
   const bool still = motion_.isStatic(), nhc = motion_.nhcApplies();
+  interval_moved_ = interval_moved_ || !still;
   const bool restart = !odo_pre_ || sample.t - last_odo_.t > options_.max_odometer_gap_s;
   const double piece = restart ? 0.0 : sample.t - last_odo_.t;
   const bool interval_done =
       !restart && odo_pre_->dt() + piece >= options_.odometer_interval_s - 1e-9;
   if (restart || interval_done || still || nhc) propagateTo(sample.t);
-  bool accepted = true;
+  OdometerStep step;
   if (restart) {
     restartOdometerInterval(sample);  // first sample, or after a gap: nothing to integrate
   } else {
@@ -226,13 +246,20 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
     }
     last_odo_ = sample;
     if (interval_done) {
-      const UpdateResult r =
-          update(*planar(std::make_shared<OdometerPreintegrationModel>(
-                     std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_)))),
-                 {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
-                  block::kPbm, block::kQbm},
-                 chi2_odometer_, 0.0, options_.odometer_iterations);
-      accepted = r.accepted;
+      std::shared_ptr<const MeasurementModel> model =
+          planar(std::make_shared<OdometerPreintegrationModel>(
+              std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))));
+      if (!interval_moved_) model = std::make_shared<StandstillProjection>(model);
+      step.interval = true;
+      step.reopened = odometer_rejected_in_row_ >= options_.max_odometer_rejections;
+      if (step.reopened) reopenCalibration();
+      const UpdateResult r = update(*model,
+                                    {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ,
+                                     block::kSv, block::kSw, block::kPbm, block::kQbm},
+                                    chi2_odometer_, 0.0, options_.odometer_iterations);
+      step.rejected = !r.accepted;
+      odometer_rejected_in_row_ =
+          step.rejected && !step.reopened ? odometer_rejected_in_row_ + 1 : 0;
       restartOdometerInterval(sample);
     }
   }
@@ -257,7 +284,7 @@ bool CalibrationFilter::updateOdometer(const OdomSample& sample) {
            {nav_var::kV, nav_var::kQ, nav_var::kBg, block::kPbm, block::kQbm},
            chi2Quantile(options_.chi2_probability, 2), gyro.variance);
   }
-  return accepted;
+  return step;
 }
 
 NavState CalibrationFilter::nav() const {

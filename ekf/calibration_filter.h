@@ -30,6 +30,14 @@ inline const char* const kOdoP = "p_n_b@odo";  // pose at the start of the odome
 inline const char* const kOdoQ = "q_n_b@odo";
 }  // namespace ekf_var
 
+/// What one odometer sample did to the filter.
+struct OdometerStep {
+  bool interval = false;  // it closed an odometer interval, which updated the filter
+  bool rejected = false;  // that update was gated out
+  bool reopened = false;  // max_odometer_rejections in a row before it: the calibration
+                          // covariance was increased by the prior's first
+};
+
 class CalibrationFilter {
  public:
   /// `imu` must outlive the filter. The state starts at init.x.t.
@@ -50,8 +58,8 @@ class CalibrationFilter {
   /// Odometer sample at its time (propagate first). The samples are preintegrated (the paper's
   /// integral measurement) from a stochastic clone of the pose; every odometer_interval_s the
   /// interval updates the filter and the clone restarts. Then ZUPT, heading and NHC constraints
-  /// when the motion detectors fire. Returns false if an odometer update was gated.
-  bool updateOdometer(const OdomSample& sample);
+  /// when the motion detectors fire.
+  OdometerStep updateOdometer(const OdomSample& sample);
 
   /// One gated Kalman update from a shared model whose blocks are the registry variables `names`;
   /// consider states (p_b_m.z when held) are not corrected. Models that take a raw gyro sample
@@ -78,6 +86,9 @@ class CalibrationFilter {
   bool standingStill() const { return s_.has(ekf_var::kHeadingClone); }
 
  private:
+  /// The filter was too sure of a wrong calibration (the odometer gated out again and again):
+  /// its calibration covariance grows by the prior covariance, the means stay.
+  void reopenCalibration();
   std::vector<int> heldIndices() const;
   /// With p_b_m.z held (planar motion), models of the vehicle's motion are made blind to p_b_m
   /// along the vehicle's vertical axis (common/models/planar_motion_projection.h).
@@ -101,6 +112,9 @@ class CalibrationFilter {
   double chi2_odometer_ = 0.0;
   std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
   OdomSample last_odo_;
+  bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
+  int odometer_rejected_in_row_ = 0;
+  Eigen::Matrix<double, 8, 8> prior_calibration_cov_;  // calibration_run.h's tangent order
 };
 
 }  // namespace giocal

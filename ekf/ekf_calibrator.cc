@@ -95,13 +95,12 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
   size_t k_odo = 0, k_gnss = 0;
   BaseEpochMatcher matcher(in.base.epochs, options.max_base_offset);
   double next_output = init->x.t;
-  long odo_rejected_in_row = 0;
   double t_prev_event = init->x.t, last_gap_start = NAN;
   double gnss_time = 0.0;
   auto& counters = run.counters;
-  for (const char* c :
-       {"odometer_updates", "odometer_rejected", "dd_rows", "gnss_rows_rejected", "code_outliers",
-        "ambiguity_resets", "gnss_without_base", "reinitializations", "imu_gaps"}) {
+  for (const char* c : {"odometer_intervals", "odometer_rejected", "calibration_reopened",
+                        "dd_rows", "gnss_rows_rejected", "code_outliers", "ambiguity_resets",
+                        "gnss_without_base", "reinitializations", "imu_gaps"}) {
     counters[c] = 0;
   }
 
@@ -122,16 +121,17 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
                     ": bridged by interpolation, the covariance grows with it");
     }
     if (t_odo <= t_gnss) {
-      const bool ok = filter->updateOdometer(in.odom[k_odo]);
-      ++counters["odometer_updates"];
-      if (!ok) {
-        ++counters["odometer_rejected"];
-        if (++odo_rejected_in_row == 50) {
-          warn(run, "50 odometer samples in a row rejected by the innovation gate at t=" +
-                        at(t_odo) + " (wheel slip, wrong scale or time offset?)");
-        }
-      } else {
-        odo_rejected_in_row = 0;
+      const OdometerStep step = filter->updateOdometer(in.odom[k_odo]);
+      counters["odometer_intervals"] += step.interval;
+      counters["odometer_rejected"] += step.rejected;
+      if (step.reopened && counters["calibration_reopened"]++ == 0) {
+        warn(run, std::to_string(options.max_odometer_rejections) +
+                      " odometer intervals in a row rejected by the innovation gate before t=" +
+                      at(t_odo) +
+                      ": the filter was more certain of its calibration than the odometer allows "
+                      "(a poor initial guess, wheel slip, wrong scale or time offset); its "
+                      "calibration covariance was increased by the prior's (counter "
+                      "calibration_reopened)");
       }
       ++k_odo;
     } else {

@@ -27,6 +27,7 @@
 #include "common/models/planar_motion_projection.h"
 #include "common/models/prior_model.h"
 #include "common/models/random_walk_model.h"
+#include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odometer_preintegration.h"
@@ -561,9 +562,15 @@ bool FactorGraphCalibrator::addEpoch(const ObsEpoch& rover, const ObsEpoch& base
   on.tilt_rate_density = o_.models.tilt_rate_density;
   auto odo =
       std::make_shared<OdometerPreintegration>(on, w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
+  // Motion constraints and whether the robot stood still over the interval.
+  feedMotion(e.t, x_prev.b_g);
+  e.still = motion_.isStatic();
   if (in_.odom.front().t <= prev.t) {
     odo->integrateSamples(in_.odom, prev.t, e.t);
-    w_.addFactor({planar(std::make_shared<OdometerPreintegrationModel>(odo)),
+    std::shared_ptr<const MeasurementModel> model =
+        planar(std::make_shared<OdometerPreintegrationModel>(odo));
+    if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
+    w_.addFactor({model,
                   {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm},
                   0.0,
                   tagged("odometer", e.k)});
@@ -577,9 +584,6 @@ bool FactorGraphCalibrator::addEpoch(const ObsEpoch& rover, const ObsEpoch& base
                 {prev.cd, e.cd},
                 0.0,
                 "rw"});
-  // Motion constraints.
-  feedMotion(e.t, x_prev.b_g);
-  e.still = motion_.isStatic();
   if (e.still) {
     w_.addFactor({std::make_shared<ZuptModel>(o_.models.zupt_sigma), {e.v}, 0.0, "zupt"});
     if (prev.still) {

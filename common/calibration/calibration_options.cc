@@ -40,6 +40,8 @@ CalibrationOptions readCalibrationOptions(const std::string& path) {
   o.odometer_interval_s = y.numberOr(s + "odometer_interval_s", o.odometer_interval_s, 0.0, 60.0);
   o.odometer_iterations =
       static_cast<int>(y.numberOr(s + "odometer_iterations", o.odometer_iterations, 1, 20));
+  o.max_odometer_rejections = static_cast<int>(
+      y.numberOr(s + "max_odometer_rejections", o.max_odometer_rejections, 1, 1e6));
   o.max_odometer_gap_s = y.numberOr(s + "max_odometer_gap_s", o.max_odometer_gap_s, 1e-3, 60.0);
   o.output_rate_hz = y.numberOr(s + "output_rate_hz", o.output_rate_hz, 0.01, 1e4);
   o.max_imu_gap_s = y.numberOr(s + "max_imu_gap_s", o.max_imu_gap_s, 1e-3, 1e3);

@@ -46,11 +46,15 @@ struct CalibrationOptions {
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   int odometer_iterations = 1;       // >1: iterated EKF update of the odometer interval
-  double max_odometer_gap_s = 0.5;   // a longer gap restarts the odometer interval [s]
-  double output_rate_hz = 10.0;      // trajectory.csv rate [Hz]
-  double max_imu_gap_s = 0.5;        // longer IMU gaps are reported (and bridged) [s]
-  double max_base_offset = 0.5;      // "rtk" section: largest rover-base time-tag gap [s]
-  double divergence_sigma = 50.0;    // DD code innovations this many sigma off: diverged
+  // This many odometer intervals in a row rejected by the NIS gate: the filter, not the odometer,
+  // is wrong (overconfident in a wrong calibration); its calibration covariance is increased by
+  // the prior covariance before the next one.
+  int max_odometer_rejections = 5;
+  double max_odometer_gap_s = 0.5;  // a longer gap restarts the odometer interval [s]
+  double output_rate_hz = 10.0;     // trajectory.csv rate [Hz]
+  double max_imu_gap_s = 0.5;       // longer IMU gaps are reported (and bridged) [s]
+  double max_base_offset = 0.5;     // "rtk" section: largest rover-base time-tag gap [s]
+  double divergence_sigma = 50.0;   // DD code innovations this many sigma off: diverged
 };
 
 /// Defaults, overridden by the keys present in `path` (empty: defaults only). Throws DataError

@@ -16,6 +16,7 @@
 #include "common/models/odometer_velocity_model.h"
 #include "common/models/planar_motion_projection.h"
 #include "common/models/prior_model.h"
+#include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
 #include "ekf/kalman_update.h"
 #include "ekf/measurement_rows.h"
@@ -168,6 +169,52 @@ TEST(PlanarMotionProjection, ResidualUnchangedAndBlindAlongTheVehicleVertical) {
       }
     }
   }
+}
+
+TEST(StandstillProjection, ResidualUnchangedAndBlindToTheCalibration) {
+  for (const auto& model : allModels()) {
+    const auto& b = model->blocks();
+    auto isCalibration = [](const StateBlock& x) {
+      for (const std::string& n : {block::kSv, block::kSw, block::kPbm, block::kQbm}) {
+        if (x.name == n || x.name.rfind(n + "@", 0) == 0) return true;
+      }
+      return false;
+    };
+    if (std::none_of(b.begin(), b.end(), isCalibration)) {
+      EXPECT_THROW(StandstillProjection{model}, std::invalid_argument) << model->name();
+      continue;
+    }
+    const StandstillProjection projected(model);
+    const std::vector<Eigen::VectorXd> values = randomValues(*model);
+    Eigen::VectorXd r0, r1;
+    std::vector<Eigen::MatrixXd> J0, J1;
+    model->evaluate(test::pointers(values).data(), r0, &J0);
+    projected.evaluate(test::pointers(values).data(), r1, &J1);
+    EXPECT_EQ(r0, r1) << model->name();
+    for (size_t k = 0; k < b.size(); ++k) {
+      if (isCalibration(b[k])) {
+        EXPECT_EQ(J1[k].norm(), 0.0) << model->name() << " " << b[k].name;
+      } else {
+        EXPECT_EQ(J1[k], J0[k]) << model->name() << " " << b[k].name;
+      }
+    }
+  }
+}
+
+TEST(StandstillProjection, IsTheOdometerJacobianAtTheTruthOfAStillVehicle) {
+  // Noise-free still readings and a pose that did not move: the model's own calibration
+  // Jacobians are zero there, which is what the projection imposes at any estimate.
+  auto odo = std::make_shared<OdometerPreintegration>(OdometerPreintegrationNoise{}, 0.02, -0.03);
+  for (int k = 0; k < 25; ++k) odo->integrate(0.04, 0.0, 0.0);
+  const OdometerPreintegrationModel model(odo);
+  std::vector<Eigen::VectorXd> values = randomValues(model);
+  values[2] = values[0];  // p_j = p_i
+  values[3] = values[1];  // q_j = q_i
+  Eigen::VectorXd r;
+  std::vector<Eigen::MatrixXd> J;
+  model.evaluate(test::pointers(values).data(), r, &J);
+  EXPECT_LT(r.norm(), 1e-12);
+  for (size_t k = 4; k < 8; ++k) EXPECT_LT(J[k].norm(), 1e-12) << model.blocks()[k].name;
 }
 
 TEST(MeasurementModels, FilterRowsAreTheModelJacobiansAtTheStateOffsets) {
