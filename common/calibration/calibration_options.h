@@ -45,7 +45,9 @@ struct CalibrationOptions {
   bool hold_p_b_m_z = true;          // keep p_b_m.z at its prior (unobservable in planar motion)
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
-  int odometer_iterations = 1;       // >1: iterated EKF update of the odometer interval
+  // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale
+  // error of badly guessed seeds (100-seed Monte Carlo: 1.8e-3 -> 1.4e-3, README).
+  int odometer_iterations = 2;
   // This many odometer intervals in a row rejected by the NIS gate: the filter, not the odometer,
   // is wrong (overconfident in a wrong calibration); its calibration covariance is increased by
   // the prior covariance before the next one.

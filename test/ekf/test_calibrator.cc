@@ -96,7 +96,8 @@ TEST(EkfCalibrator, SurvivesAGnssOutageAndAVanishingSatellite) {
 TEST(EkfCalibrator, ReopensTheCalibrationWhenTheOdometerIsGatedOutAgainAndAgain) {
   // Monte Carlo seed 49's guess errors (2.7 sigma in p_b_m.x): the straight start leaves the
   // filter sure of a wrong lever arm, and when the circle starts the odometer disagrees at every
-  // interval. Gating all of it froze p_b_m.x 1.2 m off (max_odometer_rejections: 1e6).
+  // interval. Gating all of it froze p_b_m.x 1.2 m off (max_odometer_rejections: 1e6). With
+  // plain EKF updates: iterated ones (the default) avoid this case, not the mechanism's need.
   CalibrationInputs in = simulatedInputs(101);
   CalibrationPrior& prior = in.description.initial_calibration;
   prior.mean = in.truth->calib;
@@ -105,7 +106,9 @@ TEST(EkfCalibrator, ReopensTheCalibrationWhenTheOdometerIsGatedOutAgainAndAgain)
   prior.mean.s_w -= 0.018;
   prior.mean.q_b_m =
       prior.mean.q_b_m * Eigen::Quaterniond(Eigen::AngleAxisd(5.27 * kDegToRad, Vec3::UnitX()));
-  const CalibrationRun run = runEkfCalibration(in, CalibrationOptions{});
+  CalibrationOptions options;
+  options.odometer_iterations = 1;
+  const CalibrationRun run = runEkfCalibration(in, options);
   EXPECT_GT(run.counters.at("calibration_reopened"), 0);
   ASSERT_FALSE(run.warnings.empty());
   EXPECT_NE(run.warnings.front().find("calibration covariance was increased"), std::string::npos)
