@@ -5,7 +5,8 @@
 // Usage: giocal_monte_carlo [--preset config/sim/paper.yaml] [--seeds 20] [--first 1]
 //                           [--config <yaml>] [--estimator ekf|fgo]
 //                           [--arw-deg-sqrt-h A] [--gyro-bias-deg-h B]   (override the preset's
-//                           gyro) [--guess-at-truth 1]   (start from the true calibration,
+//                           gyro) [--straight-s S]   (duration of the preset's straight
+//                           segments) [--guess-at-truth 1]   (start from the true calibration,
 //                           keeping the prior sigma: a diagnostic of linearization, see README)
 #include <sys/resource.h>
 #include <unistd.h>
@@ -79,7 +80,7 @@ int main(int argc, char** argv) {
   std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
   int seeds = 20, first = 1;
   std::string config;
-  double arw = -1.0, gyro_bias = -1.0;  // negative: the preset's
+  double arw = -1.0, gyro_bias = -1.0, straight_s = -1.0;  // negative: the preset's
   bool guess_at_truth = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
@@ -95,6 +96,8 @@ int main(int argc, char** argv) {
       arw = std::stod(v);
     else if (k == "--gyro-bias-deg-h")
       gyro_bias = std::stod(v);
+    else if (k == "--straight-s")
+      straight_s = std::stod(v);
     else if (k == "--guess-at-truth")
       guess_at_truth = std::stoi(v) != 0;
     else if (k == "--estimator")
@@ -107,6 +110,11 @@ int main(int argc, char** argv) {
   giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
   if (arw >= 0.0) cfg.imu.arw_deg_sqrt_h = arw;
   if (gyro_bias >= 0.0) cfg.imu.gyro_bias_deg_h = gyro_bias;
+  if (straight_s >= 0.0) {
+    for (giocal::sim::SegmentSpec& s : cfg.segments) {
+      if (s.type == "straight") s.duration = straight_s;
+    }
+  }
   const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
   const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
   std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
@@ -186,9 +194,11 @@ int main(int argc, char** argv) {
   }
   std::filesystem::remove_all(work);
   std::printf(
-      "\nMean absolute calibration errors over %d seeds (%s; gyro ARW %g deg/sqrt(h), bias %g "
+      "\nMean absolute calibration errors over %d seeds (%s%s; gyro ARW %g deg/sqrt(h), bias %g "
       "deg/h%s)\n",
-      seeds, preset.c_str(), cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
+      seeds, preset.c_str(),
+      straight_s >= 0.0 ? (", straight " + std::to_string(straight_s) + " s").c_str() : "",
+      cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
       guess_at_truth ? "; initial guess at the truth" : "");
   std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",
               "roll deg", "pitch", "yaw", "V scale", "W scale", "NEES7", "fix %", "x real");
