@@ -1,6 +1,7 @@
 #include "ekf/calibration_filter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,7 +19,20 @@
 #include "ekf/imu_propagation.h"
 
 namespace giocal {
+
 namespace {
+
+/// Registry indices of the calibration's tangent coordinates, in calib_index order.
+std::array<int, 8> calibrationIndices(const StateRegistry& s) {
+  std::array<int, 8> idx{};
+  idx[calib_index::kSv] = s.offset(block::kSv);
+  idx[calib_index::kSw] = s.offset(block::kSw);
+  for (int k = 0; k < 3; ++k) {
+    idx[static_cast<size_t>(calib_index::kP + k)] = s.offset(block::kPbm) + k;
+    idx[static_cast<size_t>(calib_index::kTheta + k)] = s.offset(block::kQbm) + k;
+  }
+  return idx;
+}
 
 MotionDetectorOptions detectorOptions(const CalibrationOptions& o, const ImuNoise& noise) {
   MotionDetectorOptions m = o.models.motion;
@@ -81,14 +95,9 @@ void CalibrationFilter::reopenCalibration() {
   Eigen::Matrix<double, 8, 8> add = prior_calibration_cov_;
   if (options_.hold_p_b_m_z) add(calib_index::kP + 2, calib_index::kP + 2) = 0.0;
   add.topLeftCorner(2, 2).setZero();
-  const int idx[4] = {s_.offset(block::kSv), s_.offset(block::kSw), s_.offset(block::kPbm),
-                      s_.offset(block::kQbm)};
-  const int start[4] = {calib_index::kSv, calib_index::kSw, calib_index::kP, calib_index::kTheta};
-  const int size[4] = {1, 1, 3, 3};
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b)
-      s_.covariance().block(idx[a], idx[b], size[a], size[b]) +=
-          add.block(start[a], start[b], size[a], size[b]);
+  const std::array<int, 8> idx = calibrationIndices(s_);
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b) s_.covariance()(idx[a], idx[b]) += add(a, b);
 }
 
 std::vector<int> CalibrationFilter::heldIndices() const {
@@ -300,14 +309,9 @@ CalibrationEstimate CalibrationFilter::calibration() const {
   e.calib.s_w = s_.value(block::kSw)[0];
   e.calib.p_b_m = s_.value(block::kPbm);
   e.calib.q_b_m = quatFromWxyz(s_.value(block::kQbm).data());
-  const int idx[4] = {s_.offset(block::kSv), s_.offset(block::kSw), s_.offset(block::kPbm),
-                      s_.offset(block::kQbm)};
-  const int start[4] = {calib_index::kSv, calib_index::kSw, calib_index::kP, calib_index::kTheta};
-  const int size[4] = {1, 1, 3, 3};
-  for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b)
-      e.cov.block(start[a], start[b], size[a], size[b]) =
-          s_.covariance().block(idx[a], idx[b], size[a], size[b]);
+  const std::array<int, 8> idx = calibrationIndices(s_);
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b) e.cov(a, b) = s_.covariance()(idx[a], idx[b]);
   return e;
 }
 

@@ -6,25 +6,23 @@
 
 namespace giocal {
 
-PlanarMotionProjection::PlanarMotionProjection(std::shared_ptr<const MeasurementModel> inner)
-    : inner_(std::move(inner)) {
-  const auto& b = inner_->blocks();
+PlanarMotionProjection::PlanarMotionProjection(std::shared_ptr<const MeasurementModel> model)
+    : ProjectedModel(std::move(model), "+planar") {
+  const auto& b = blocks();
   for (size_t k = 0; k < b.size(); ++k) {
     if (b[k].name == block::kPbm) p_block_ = static_cast<int>(k);
     if (b[k].name == block::kQbm) q_block_ = static_cast<int>(k);
   }
   if (p_block_ < 0 || q_block_ < 0) {
-    throw std::invalid_argument(inner_->name() + " has no p_b_m and q_b_m blocks to project");
+    throw std::invalid_argument(innerModel().name() + " has no p_b_m and q_b_m blocks to project");
   }
 }
 
-void PlanarMotionProjection::evaluate(const double* const* params, Eigen::VectorXd& residual,
-                                      std::vector<Eigen::MatrixXd>* jacobians) const {
-  inner_->evaluate(params, residual, jacobians);
-  if (!jacobians) return;
+void PlanarMotionProjection::project(const double* const* params,
+                                     std::vector<Eigen::MatrixXd>& J) const {
   const Eigen::Vector3d u = quatAt(params[q_block_]) * Eigen::Vector3d::UnitZ();
-  Eigen::MatrixXd& J = (*jacobians)[static_cast<size_t>(p_block_)];
-  J = J * (Eigen::Matrix3d::Identity() - u * u.transpose());
+  Eigen::MatrixXd& J_p = J[static_cast<size_t>(p_block_)];
+  J_p = J_p * (Eigen::Matrix3d::Identity() - u * u.transpose());
 }
 
 }  // namespace giocal

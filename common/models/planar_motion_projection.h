@@ -5,26 +5,20 @@
 // observability-constrained update: the p_b_m Jacobian is projected onto the observable plane).
 #pragma once
 
-#include <memory>
-
-#include "common/models/measurement_model.h"
+#include "common/models/projected_model.h"
 
 namespace giocal {
 
-class PlanarMotionProjection : public MeasurementModel {
+class PlanarMotionProjection : public ProjectedModel {
  public:
   /// `inner` must have blocks named p_b_m and q_b_m. Throws std::invalid_argument otherwise.
   explicit PlanarMotionProjection(std::shared_ptr<const MeasurementModel> inner);
-  std::string name() const override { return inner_->name() + "+planar"; }
-  const std::vector<StateBlock>& blocks() const override { return inner_->blocks(); }
-  int residualSize() const override { return inner_->residualSize(); }
-  /// The inner residual; the p_b_m Jacobian times (I - u u^T), u = R_b_m e_z.
-  void evaluate(const double* const* params, Eigen::VectorXd& residual,
-                std::vector<Eigen::MatrixXd>* jacobians) const override;
-  Eigen::MatrixXd covariance() const override { return inner_->covariance(); }
+
+ protected:
+  /// The p_b_m Jacobian times (I - u u^T), u = R_b_m e_z.
+  void project(const double* const* params, std::vector<Eigen::MatrixXd>& J) const override;
 
  private:
-  std::shared_ptr<const MeasurementModel> inner_;
   int p_block_ = -1, q_block_ = -1;
 };
 

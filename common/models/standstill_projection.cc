@@ -2,13 +2,11 @@
 
 #include <stdexcept>
 
-#include "common/models/block_values.h"
-
 namespace giocal {
 
-StandstillProjection::StandstillProjection(std::shared_ptr<const MeasurementModel> inner)
-    : inner_(std::move(inner)) {
-  const auto& b = inner_->blocks();
+StandstillProjection::StandstillProjection(std::shared_ptr<const MeasurementModel> model)
+    : ProjectedModel(std::move(model), "+standstill") {
+  const auto& b = blocks();
   for (size_t k = 0; k < b.size(); ++k) {
     for (const std::string& n : {block::kSv, block::kSw, block::kPbm, block::kQbm}) {
       // Per-epoch blocks carry their epoch: "s_v@i".
@@ -16,15 +14,13 @@ StandstillProjection::StandstillProjection(std::shared_ptr<const MeasurementMode
     }
   }
   if (calibration_blocks_.empty()) {
-    throw std::invalid_argument(inner_->name() + " has no calibration blocks to project");
+    throw std::invalid_argument(innerModel().name() + " has no calibration blocks to project");
   }
 }
 
-void StandstillProjection::evaluate(const double* const* params, Eigen::VectorXd& residual,
-                                    std::vector<Eigen::MatrixXd>* jacobians) const {
-  inner_->evaluate(params, residual, jacobians);
-  if (!jacobians) return;
-  for (size_t k : calibration_blocks_) (*jacobians)[k].setZero();
+void StandstillProjection::project(const double* const* /*params*/,
+                                   std::vector<Eigen::MatrixXd>& J) const {
+  for (size_t k : calibration_blocks_) J[k].setZero();
 }
 
 }  // namespace giocal

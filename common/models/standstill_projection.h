@@ -6,27 +6,20 @@
 // PlanarMotionProjection). The residual is unchanged: "no motion" still constrains the pose.
 #pragma once
 
-#include <memory>
-#include <vector>
-
-#include "common/models/measurement_model.h"
+#include "common/models/projected_model.h"
 
 namespace giocal {
 
-class StandstillProjection : public MeasurementModel {
+class StandstillProjection : public ProjectedModel {
  public:
   /// `inner` must have at least one calibration block. Throws std::invalid_argument otherwise.
   explicit StandstillProjection(std::shared_ptr<const MeasurementModel> inner);
-  std::string name() const override { return inner_->name() + "+standstill"; }
-  const std::vector<StateBlock>& blocks() const override { return inner_->blocks(); }
-  int residualSize() const override { return inner_->residualSize(); }
-  /// The inner residual; zero Jacobians in the calibration blocks.
-  void evaluate(const double* const* params, Eigen::VectorXd& residual,
-                std::vector<Eigen::MatrixXd>* jacobians) const override;
-  Eigen::MatrixXd covariance() const override { return inner_->covariance(); }
+
+ protected:
+  /// Zero Jacobians in the calibration blocks.
+  void project(const double* const* params, std::vector<Eigen::MatrixXd>& J) const override;
 
  private:
-  std::shared_ptr<const MeasurementModel> inner_;
   std::vector<size_t> calibration_blocks_;
 };
 

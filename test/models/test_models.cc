@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <functional>
 #include <memory>
 #include <random>
 
@@ -138,24 +139,32 @@ TEST(MeasurementModels, EveryJacobianMatchesNumericDifferentiation) {
   }
 }
 
+/// The inner model's and the projected model's Jacobians at `values`; the residuals must agree.
+std::pair<std::vector<Eigen::MatrixXd>, std::vector<Eigen::MatrixXd>> jacobiansWithAndWithout(
+    const ProjectedModel& projected, const std::vector<Eigen::VectorXd>& values) {
+  Eigen::VectorXd r0, r1;
+  std::vector<Eigen::MatrixXd> J0, J1;
+  projected.innerModel().evaluate(test::pointers(values).data(), r0, &J0);
+  projected.evaluate(test::pointers(values).data(), r1, &J1);
+  EXPECT_EQ(r0, r1) << projected.name();
+  return {J0, J1};
+}
+
+bool hasBlock(const MeasurementModel& m, const std::function<bool(const StateBlock&)>& which) {
+  return std::any_of(m.blocks().begin(), m.blocks().end(), which);
+}
+
 TEST(PlanarMotionProjection, ResidualUnchangedAndBlindAlongTheVehicleVertical) {
   for (const auto& model : allModels()) {
     const auto& b = model->blocks();
-    const bool has =
-        std::any_of(b.begin(), b.end(),
-                    [](const StateBlock& x) { return x.name == block::kPbm; }) &&
-        std::any_of(b.begin(), b.end(), [](const StateBlock& x) { return x.name == block::kQbm; });
+    const bool has = hasBlock(*model, [](const StateBlock& x) { return x.name == block::kPbm; }) &&
+                     hasBlock(*model, [](const StateBlock& x) { return x.name == block::kQbm; });
     if (!has) {
       EXPECT_THROW(PlanarMotionProjection{model}, std::invalid_argument) << model->name();
       continue;
     }
-    const PlanarMotionProjection projected(model);
     const std::vector<Eigen::VectorXd> values = randomValues(*model);
-    Eigen::VectorXd r0, r1;
-    std::vector<Eigen::MatrixXd> J0, J1;
-    model->evaluate(test::pointers(values).data(), r0, &J0);
-    projected.evaluate(test::pointers(values).data(), r1, &J1);
-    EXPECT_EQ(r0, r1) << model->name();
+    const auto [J0, J1] = jacobiansWithAndWithout(PlanarMotionProjection(model), values);
     for (size_t k = 0; k < b.size(); ++k) {
       if (b[k].name == block::kQbm) {
         const Vec3 u = quatFromWxyz(values[k].data()) * Vec3::UnitZ();
@@ -180,17 +189,12 @@ TEST(StandstillProjection, ResidualUnchangedAndBlindToTheCalibration) {
       }
       return false;
     };
-    if (std::none_of(b.begin(), b.end(), isCalibration)) {
+    if (!hasBlock(*model, isCalibration)) {
       EXPECT_THROW(StandstillProjection{model}, std::invalid_argument) << model->name();
       continue;
     }
-    const StandstillProjection projected(model);
     const std::vector<Eigen::VectorXd> values = randomValues(*model);
-    Eigen::VectorXd r0, r1;
-    std::vector<Eigen::MatrixXd> J0, J1;
-    model->evaluate(test::pointers(values).data(), r0, &J0);
-    projected.evaluate(test::pointers(values).data(), r1, &J1);
-    EXPECT_EQ(r0, r1) << model->name();
+    const auto [J0, J1] = jacobiansWithAndWithout(StandstillProjection(model), values);
     for (size_t k = 0; k < b.size(); ++k) {
       if (isCalibration(b[k])) {
         EXPECT_EQ(J1[k].norm(), 0.0) << model->name() << " " << b[k].name;
