@@ -96,6 +96,11 @@ void CalibrationFilter::reopenCalibration() {
   if (options_.hold_p_b_m_z) add(calib_index::kP + 2, calib_index::kP + 2) = 0.0;
   add.topLeftCorner(2, 2).setZero();
   const std::array<int, 8> idx = calibrationIndices(s_);
+  double trace = 0.0;
+  for (int a = 2; a < 8; ++a) {
+    if (add(a, a) > 0.0) trace += s_.covariance()(idx[a], idx[a]);
+  }
+  if (trace >= add.trace()) return;
   for (int a = 0; a < 8; ++a)
     for (int b = 0; b < 8; ++b) s_.covariance()(idx[a], idx[b]) += add(a, b);
 }

@@ -34,7 +34,7 @@ inline const char* const kOdoQ = "q_n_b@odo";
 struct OdometerStep {
   bool interval = false;  // it closed an odometer interval, which updated the filter
   bool rejected = false;  // that update was gated out
-  bool reopened = false;  // max_odometer_rejections in a row before it: the calibration
+  bool reopened = false;  // max_odometer_rejections in a row before it: the extrinsic
                           // covariance was increased by the prior's first
 };
 
@@ -87,7 +87,8 @@ class CalibrationFilter {
 
  private:
   /// The filter was too sure of a wrong calibration (the odometer gated out again and again):
-  /// its calibration covariance grows by the prior covariance, the means stay.
+  /// the covariance of p_b_m and q_b_m grows by their prior covariance, the means stay. Not
+  /// when it is already at least the prior's (a broken odometer must not grow it forever).
   void reopenCalibration();
   std::vector<int> heldIndices() const;
   /// With p_b_m.z held (planar motion), models of the vehicle's motion are made blind to p_b_m

@@ -129,8 +129,8 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
                       " odometer intervals in a row rejected by the innovation gate before t=" +
                       at(t_odo) +
                       ": the filter was more certain of its calibration than the odometer allows "
-                      "(a poor initial guess, wheel slip, wrong scale or time offset); its "
-                      "calibration covariance was increased by the prior's (counter "
+                      "(a poor initial guess, wheel slip, wrong scale or time offset); the "
+                      "covariance of p_b_m and q_b_m was increased by the prior's (counter "
                       "calibration_reopened)");
       }
       ++k_odo;

@@ -49,8 +49,8 @@ struct CalibrationOptions {
   // error of badly guessed seeds (100-seed Monte Carlo: 1.8e-3 -> 1.4e-3, README).
   int odometer_iterations = 2;
   // This many odometer intervals in a row rejected by the NIS gate: the filter, not the odometer,
-  // is wrong (overconfident in a wrong calibration); its calibration covariance is increased by
-  // the prior covariance before the next one.
+  // is wrong (overconfident in a wrong calibration); the covariance of p_b_m and q_b_m is
+  // increased by their prior covariance before the next one.
   int max_odometer_rejections = 5;
   double max_odometer_gap_s = 0.5;  // a longer gap restarts the odometer interval [s]
   double output_rate_hz = 10.0;     // trajectory.csv rate [Hz]
