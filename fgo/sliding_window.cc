@@ -120,6 +120,10 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double funct
   options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
   options.max_num_iterations = max_iterations;
   options.function_tolerance = function_tolerance;
+  // Start as Gauss-Newton: from Ceres' default radius (1e4), Levenberg-Marquardt's damping held
+  // back the per-epoch scale chain (stiff random walk, weak information) for the whole solve,
+  // and the function tolerance then stopped it with s_w near the initial guess.
+  options.initial_trust_region_radius = 1e12;
   options.num_threads = 1;
   options.logging_type = ceres::SILENT;
   ceres::Solver::Summary summary;
