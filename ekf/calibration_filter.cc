@@ -67,7 +67,6 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
 
   const CalibrationPrior& prior = dataset.initial_calibration;
   const Eigen::Matrix<double, 8, 8> Pc = priorCalibrationCovariance(prior);
-  prior_calibration_cov_ = Pc;
   Eigen::VectorXd qbm(4);
   quatToWxyz(prior.mean.q_b_m, qbm.data());
   s_.add(vectorBlock(block::kSv, 1), Eigen::VectorXd::Constant(1, prior.mean.s_v), blk(Pc, 0, 1));
@@ -92,7 +91,7 @@ std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
 void CalibrationFilter::reopenCalibration() {
   // Adding the prior covariance keeps P positive semi-definite and the correlations; the held
   // p_b_m.z keeps its prior variance.
-  Eigen::Matrix<double, 8, 8> add = prior_calibration_cov_;
+  Eigen::Matrix<double, 8, 8> add = priorCalibrationCovariance(dataset_.initial_calibration);
   if (options_.hold_p_b_m_z) add(calib_index::kP + 2, calib_index::kP + 2) = 0.0;
   add.topLeftCorner(2, 2).setZero();
   const std::array<int, 8> idx = calibrationIndices(s_);

@@ -115,7 +115,6 @@ class CalibrationFilter {
   OdomSample last_odo_;
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
   int odometer_rejected_in_row_ = 0;
-  Eigen::Matrix<double, 8, 8> prior_calibration_cov_;  // calibration_run.h's tangent order
 };
 
 }  // namespace giocal
