@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <set>
@@ -117,7 +118,12 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double funct
     }
   }
   ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_NORMAL_CHOLESKY;
+  // The window is a chain of epochs: sparse normal equations are ~3x faster than dense ones at
+  // window 30 (README, Measured). Dense only where Ceres was built without a sparse library.
+  options.linear_solver_type =
+      ceres::IsSparseLinearAlgebraLibraryTypeAvailable(options.sparse_linear_algebra_library_type)
+          ? ceres::SPARSE_NORMAL_CHOLESKY
+          : ceres::DENSE_NORMAL_CHOLESKY;
   options.max_num_iterations = max_iterations;
   options.function_tolerance = function_tolerance;
   // Start as Gauss-Newton: from Ceres' default radius (1e4), Levenberg-Marquardt's damping held
@@ -137,17 +143,21 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double funct
           summary.final_cost};
 }
 
-void SlidingWindow::linearize(const std::vector<std::string>& order,
-                              const std::vector<const Factor*>& factors, Eigen::MatrixXd& H,
-                              Eigen::VectorXd& b) const {
+std::map<std::string, int> SlidingWindow::tangentOffsets(const std::vector<std::string>& order,
+                                                         int* size) const {
   std::map<std::string, int> offset;
   int n = 0;
   for (const std::string& name : order) {
     offset[name] = n;
     n += vars_.at(name).block.tangentSize();
   }
-  H = Eigen::MatrixXd::Zero(n, n);
-  b = Eigen::VectorXd::Zero(n);
+  if (size) *size = n;
+  return offset;
+}
+
+void SlidingWindow::forEachWhitenedBlock(const std::map<std::string, int>& offset,
+                                         const std::vector<const Factor*>& factors,
+                                         const BlockVisitor& visit, Eigen::VectorXd& b) const {
   for (const Factor* f : factors) {
     std::vector<const double*> params;
     for (const std::string& v : f->vars) params.push_back(vars_.at(v).value.data());
@@ -163,25 +173,32 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
     }
     for (const auto& [oa, Ja] : cols) {
       b.segment(oa, Ja.cols()) += Ja.transpose() * rw;
-      for (const auto& [ob, Jb] : cols)
-        H.block(oa, ob, Ja.cols(), Jb.cols()) += Ja.transpose() * Jb;
+      for (const auto& [ob, Jb] : cols) visit(oa, ob, Ja.transpose() * Jb);
     }
   }
+}
+
+void SlidingWindow::linearize(const std::vector<std::string>& order,
+                              const std::vector<const Factor*>& factors, Eigen::MatrixXd& H,
+                              Eigen::VectorXd& b) const {
+  int n = 0;
+  const std::map<std::string, int> offset = tangentOffsets(order, &n);
+  H = Eigen::MatrixXd::Zero(n, n);
+  b = Eigen::VectorXd::Zero(n);
+  forEachWhitenedBlock(
+      offset, factors,
+      [&](int oa, int ob, const Eigen::MatrixXd& Hab) {
+        H.block(oa, ob, Hab.rows(), Hab.cols()) += Hab;
+      },
+      b);
 }
 
 Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
   const std::vector<std::string> order = estimatedVariables();
   std::vector<const Factor*> all;
   for (const Factor& f : factors_) all.push_back(&f);
-  Eigen::MatrixXd H;
-  Eigen::VectorXd b;
-  linearize(order, all, H, b);
-  std::map<std::string, int> offset;
   int n = 0;
-  for (const std::string& name : order) {
-    offset[name] = n;
-    n += vars_.at(name).block.tangentSize();
-  }
+  const std::map<std::string, int> offset = tangentOffsets(order, &n);
   std::vector<int> idx;
   for (const std::string& name : names) {
     const auto it = offset.find(name);
@@ -190,7 +207,34 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
   }
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, static_cast<long>(idx.size()));
   for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
-  const Eigen::MatrixXd X = H.ldlt().solve(E);
+  // The window's Hessian is sparse (a chain of epochs plus the calibration and ambiguity columns):
+  // a sparse factorization is ~10x cheaper than a dense one at window 30, and CHOLMOD's ordering
+  // ~15x cheaper than Eigen's own AMD (measured, README).
+  // CHOLMOD reads the lower triangle only.
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  forEachWhitenedBlock(
+      offset, all,
+      [&](int oa, int ob, const Eigen::MatrixXd& Hab) {
+        if (ob > oa) return;
+        for (long j = 0; j < Hab.cols(); ++j) {
+          for (long i = ob == oa ? j : 0; i < Hab.rows(); ++i) {
+            triplets.emplace_back(oa + i, ob + j, Hab(i, j));
+          }
+        }
+      },
+      b);
+  Eigen::SparseMatrix<double> H(n, n);
+  H.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::MatrixXd X;
+  Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  ldlt.cholmod().print = 0;  // a singular H is handled below, not printed
+  ldlt.compute(H);
+  if (ldlt.info() == Eigen::Success) X = ldlt.solve(E);
+  if (ldlt.info() != Eigen::Success || !X.allFinite()) {
+    // A direction nothing observes: the dense pivoting LDLT still returns the observed part.
+    X = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>().ldlt().solve(E);
+  }
   Eigen::MatrixXd C(idx.size(), idx.size());
   for (size_t r = 0; r < idx.size(); ++r) C.row(static_cast<long>(r)) = X.row(idx[r]);
   return 0.5 * (C + C.transpose());

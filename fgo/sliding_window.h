@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -61,6 +62,16 @@ class SlidingWindow {
   void marginalize(const std::vector<std::string>& names);
 
  private:
+  /// Receives one block H_ab = J_a^T J_b at tangent offsets (oa, ob).
+  using BlockVisitor = std::function<void(int oa, int ob, const Eigen::MatrixXd& Hab)>;
+  /// Tangent offset of each of `order`'s variables; `size` gets the total.
+  std::map<std::string, int> tangentOffsets(const std::vector<std::string>& order, int* size) const;
+  /// Whitens and linearizes `factors` at the current values, handing each Hessian block to
+  /// `visit` and adding J^T r into b; variables not in `offset` are ignored.
+  void forEachWhitenedBlock(const std::map<std::string, int>& offset,
+                            const std::vector<const Factor*>& factors, const BlockVisitor& visit,
+                            Eigen::VectorXd& b) const;
+
   struct Variable {
     StateBlock block;
     Eigen::VectorXd value;

@@ -3,7 +3,7 @@
 # Sourced by demo.sh and test.sh; not one of the README's commands on its own.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-packages=(cmake g++ make libeigen3-dev libceres-dev libboost-program-options-dev libgtest-dev
+packages=(cmake g++ make libeigen3-dev libceres-dev libsuitesparse-dev libboost-program-options-dev libgtest-dev
   libyaml-cpp-dev nlohmann-json3-dev rtklib)
 missing=()
 for p in "${packages[@]}"; do

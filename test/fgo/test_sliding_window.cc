@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <memory>
 
 #include "common/models/prior_model.h"
@@ -44,6 +45,43 @@ TEST(SlidingWindow, MarginalizationKeepsTheEstimateAndCovariance) {
   EXPECT_LT((w.value("x1") - full.value("x1")).norm(), 1e-6);  // solver precision
   EXPECT_LT((w.value("x2") - full.value("x2")).norm(), 1e-6);
   EXPECT_LT((w.covariance({"x1", "x2"}) - C_full).norm(), 1e-10);
+}
+
+TEST(SlidingWindow, CovarianceIsTheInverseHessian) {
+  // The chain is linear with the same information on each axis: per axis, H over (x0, x1, x2) is
+  // tridiagonal from the priors (1/0.5^2, 1/0.4^2) and the random walks (1/0.3^2, 1/0.2^2).
+  const SlidingWindow w = chain();
+  const double p0 = 1 / 0.25, p2 = 1 / 0.16, r01 = 1 / 0.09, r12 = 1 / 0.04;
+  Eigen::Matrix3d H;
+  H << p0 + r01, -r01, 0, -r01, r01 + r12, -r12, 0, -r12, r12 + p2;
+  const Eigen::Matrix3d P = H.inverse();
+  const Eigen::MatrixXd C = w.covariance({"x2", "x0", "x1"});  // any order of the names
+  const int at[3] = {1, 2, 0};                                 // x0, x1, x2 in C
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      for (int a = 0; a < 3; ++a) {
+        for (int b = 0; b < 3; ++b) {
+          const double expected = a == b ? P(i, j) : 0.0;
+          EXPECT_NEAR(C(3 * at[i] + a, 3 * at[j] + b), expected, 1e-12);
+        }
+      }
+    }
+  }
+}
+
+TEST(SlidingWindow, CovarianceOfAnUnobservedDirectionIsFinite) {
+  // Two variables tied only to each other: their common offset is unobserved, so the Hessian is
+  // singular. The covariance must still be finite, and it keeps the observed difference's sigma.
+  SlidingWindow w;
+  w.addVariable(vectorBlock("a"), Eigen::Vector3d::Zero());
+  w.addVariable(vectorBlock("b"), Eigen::Vector3d::Zero());
+  w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 0.3), {"a", "b"}, 0.0, "rw"});
+  const Eigen::MatrixXd C = w.covariance({"a", "b"});
+  EXPECT_TRUE(C.allFinite());
+  Eigen::MatrixXd D(3, 6);
+  D << -Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity();
+  // The pseudo-inverse: var(b - a) = 0.3^2 along each axis.
+  EXPECT_NEAR((D * C * D.transpose() - 0.09 * Eigen::Matrix3d::Identity()).norm(), 0.0, 1e-9);
 }
 
 TEST(SlidingWindow, AStiffChainMovesInOneSolve) {
