@@ -7,7 +7,7 @@
 namespace giocal {
 
 struct FgoOptions {
-  int window = 5;                // GNSS epochs kept in the window (chosen by measurement, README)
+  int window = 30;               // GNSS epochs kept in the window (chosen by measurement, README)
   int max_iterations = 10;       // Ceres iterations per solve
   double code_huber = 3.0;       // Huber threshold of DD code and Doppler factors [sigma]
   double rejection_sigma = 5.0;  // rows with post-solve residuals beyond this are removed

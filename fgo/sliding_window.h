@@ -62,15 +62,20 @@ class SlidingWindow {
   void marginalize(const std::vector<std::string>& names);
 
  private:
-  /// Receives one block H_ab = J_a^T J_b at tangent offsets (oa, ob).
-  using BlockVisitor = std::function<void(int oa, int ob, const Eigen::MatrixXd& Hab)>;
+  /// A factor's variable in the window's tangent (global) and in the factor's columns (local).
+  struct Segment {
+    int global, local, size;
+  };
+  /// Receives one factor's whitened J^T J over its window variables.
+  using FactorVisitor =
+      std::function<void(const std::vector<Segment>& segments, const Eigen::MatrixXd& Hf)>;
   /// Tangent offset of each of `order`'s variables; `size` gets the total.
   std::map<std::string, int> tangentOffsets(const std::vector<std::string>& order, int* size) const;
-  /// Whitens and linearizes `factors` at the current values, handing each Hessian block to
+  /// Whitens and linearizes `factors` at the current values, handing each factor's J^T J to
   /// `visit` and adding J^T r into b; variables not in `offset` are ignored.
-  void forEachWhitenedBlock(const std::map<std::string, int>& offset,
-                            const std::vector<const Factor*>& factors, const BlockVisitor& visit,
-                            Eigen::VectorXd& b) const;
+  void forEachWhitenedFactor(const std::map<std::string, int>& offset,
+                             const std::vector<const Factor*>& factors, const FactorVisitor& visit,
+                             Eigen::VectorXd& b) const;
 
   struct Variable {
     StateBlock block;
