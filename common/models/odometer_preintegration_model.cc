@@ -1,5 +1,8 @@
 #include "common/models/odometer_preintegration_model.h"
 
+#include <Eigen/Cholesky>
+#include <stdexcept>
+
 #include "common/models/block_values.h"
 
 namespace giocal {
@@ -16,6 +19,15 @@ const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
   return kBlocks;
 }
 
+Eigen::Matrix<double, 6, 6> OdometerPreintegrationModel::whitener(double s_v, double s_w) const {
+  const Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt(pre_->covarianceAt(s_v, s_w));
+  if (llt.info() != Eigen::Success) {
+    throw std::runtime_error("odometer preintegration: covariance not positive definite");
+  }
+  const Eigen::Matrix<double, 6, 6> L = llt.matrixL();
+  return L.triangularView<Eigen::Lower>().solve(Eigen::Matrix<double, 6, 6>::Identity());
+}
+
 void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
                                            std::vector<Eigen::MatrixXd>* jacobians) const {
   OdometerCalibration c;
@@ -25,9 +37,15 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
   c.q_b_m = quatAt(params[7]);
   const OdometerResidual r =
       pre_->evaluate(vec3At(params[0]), quatAt(params[1]), vec3At(params[2]), quatAt(params[3]), c);
-  residual = r.r;
+  const Eigen::Matrix<double, 6, 6> W = whitener(c.s_v, c.s_w);
+  residual = W * r.r;
   if (jacobians) {
-    *jacobians = {r.J_p_i, r.J_q_i, r.J_p_j, r.J_q_j, r.J_s_v, r.J_s_w, r.J_p_b_m, r.J_q_b_m};
+    *jacobians = {W * r.J_p_i, W * r.J_q_i, W * r.J_p_j,   W * r.J_q_j,
+                  W * r.J_s_v, W * r.J_s_w, W * r.J_p_b_m, W * r.J_q_b_m};
+    // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
+    const double h = 1e-6;
+    (*jacobians)[4] += (whitener(c.s_v + h, c.s_w) - whitener(c.s_v - h, c.s_w)) * r.r / (2 * h);
+    (*jacobians)[5] += (whitener(c.s_v, c.s_w + h) - whitener(c.s_v, c.s_w - h)) * r.r / (2 * h);
   }
 }
 

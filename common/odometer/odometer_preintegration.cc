@@ -28,6 +28,11 @@ OdometerPreintegration::OdometerPreintegration(const OdometerPreintegrationNoise
                                                double s_w)
     : noise_(noise), s_v_lin_(s_v), s_w_lin_(s_w) {}
 
+Eigen::Matrix<double, 6, 6> OdometerPreintegration::covarianceAt(double s_v, double s_w) const {
+  const double a_v = (1.0 + s_v) / (1.0 + s_v_lin_), a_w = (1.0 + s_w) / (1.0 + s_w_lin_);
+  return cov_ + (a_v * a_v - 1.0) * cov_speed_ + (a_w * a_w - 1.0) * cov_yaw_rate_;
+}
+
 void OdometerPreintegration::integrate(double dt, double v, double w) {
   if (!(dt > 0.0) || !std::isfinite(v) || !std::isfinite(w)) {
     throw std::invalid_argument("OdometerPreintegration: step needs dt > 0 and finite samples");
@@ -49,12 +54,17 @@ void OdometerPreintegration::integrate(double dt, double v, double w) {
   const double tilt = noise_.tilt_rate_density * noise_.tilt_rate_density * dt;
   // A sample's white noise holds over its interval (variance sigma^2 dt^2); the out-of-plane terms
   // are continuous densities (variance q^2 dt).
-  Eigen::Vector3d qv(lat, k_v * k_v * noise_.speed_sigma * noise_.speed_sigma * dt * dt, lat);
-  Eigen::Vector3d qw(tilt, tilt,
-                     k_w * k_w * noise_.yaw_rate_sigma * noise_.yaw_rate_sigma * dt * dt);
-  Q.block<3, 3>(0, 0) = Rz * qv.asDiagonal() * Rz.transpose();
-  Q.block<3, 3>(3, 3) = qw.asDiagonal();
+  const double var_v = k_v * k_v * noise_.speed_sigma * noise_.speed_sigma * dt * dt;
+  const double var_w = k_w * k_w * noise_.yaw_rate_sigma * noise_.yaw_rate_sigma * dt * dt;
+  Q.block<3, 3>(0, 0) = Rz * Eigen::Vector3d(lat, var_v, lat).asDiagonal() * Rz.transpose();
+  Q.block<3, 3>(3, 3) = Eigen::Vector3d(tilt, tilt, var_w).asDiagonal();
   cov_ = A * cov_ * A.transpose() + Q;
+  // The shares of the measured speed's and yaw rate's noise, which scale with (1 + s)^2.
+  Eigen::Matrix<double, 6, 6> Q_v = Eigen::Matrix<double, 6, 6>::Zero();
+  Q_v.block<3, 3>(0, 0) = var_v * Rz.col(1) * Rz.col(1).transpose();
+  cov_speed_ = A * cov_speed_ * A.transpose() + Q_v;
+  cov_yaw_rate_ = A * cov_yaw_rate_ * A.transpose();
+  cov_yaw_rate_(5, 5) += var_w;
 
   // dP/ds_w: the step depends on s_w through theta = k_w Theta and phi = k_w w dt.
   dP_dsw_ +=

@@ -61,6 +61,9 @@ class OdometerPreintegration {
   Vec3 deltaP_b(const OdometerCalibration& c) const;
   /// Covariance of [dp_m, dtheta_m].
   const Eigen::Matrix<double, 6, 6>& covariance() const { return cov_; }
+  /// The same for other scales: the measured speed's and yaw rate's noise enter multiplied by
+  /// (1 + s_v) and (1 + s_w) (the other noise does not).
+  Eigen::Matrix<double, 6, 6> covarianceAt(double s_v, double s_w) const;
 
   /// Residual between IMU poses (R_n_bi, p_n_bi), (R_n_bj, p_n_bj) and the calibration.
   OdometerResidual evaluate(const Vec3& p_i, const Eigen::Quaterniond& q_i, const Vec3& p_j,
@@ -74,6 +77,8 @@ class OdometerPreintegration {
   Vec3 P_ = Vec3::Zero();  // int Rz(theta) e_y v dt at s_w_lin
   Vec3 dP_dsw_ = Vec3::Zero();
   Eigen::Matrix<double, 6, 6> cov_ = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 6> cov_speed_ = Eigen::Matrix<double, 6, 6>::Zero();     // part of cov_
+  Eigen::Matrix<double, 6, 6> cov_yaw_rate_ = Eigen::Matrix<double, 6, 6>::Zero();  // part of cov_
 };
 
 }  // namespace giocal
