@@ -1,8 +1,8 @@
 #include "fgo/model_cost_function.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/LU>
 #include <stdexcept>
+
+#include "common/math/whitening.h"
 
 namespace giocal {
 
@@ -11,12 +11,7 @@ ModelCostFunction::ModelCostFunction(std::shared_ptr<const MeasurementModel> mod
   set_num_residuals(model_->residualSize());
   for (const auto& b : model_->blocks())
     mutable_parameter_block_sizes()->push_back(b.ambientSize());
-  const Eigen::MatrixXd info = model_->covariance().inverse();
-  const Eigen::LLT<Eigen::MatrixXd> llt(info);
-  if (llt.info() != Eigen::Success || !info.allFinite()) {
-    throw std::invalid_argument(model_->name() + ": covariance is not positive definite");
-  }
-  sqrt_info_ = llt.matrixU();
+  sqrt_info_ = whitener(model_->covariance(), model_->name());
 }
 
 bool ModelCostFunction::Evaluate(const double* const* parameters, double* residuals,

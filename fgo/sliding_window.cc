@@ -9,21 +9,12 @@
 #include <set>
 #include <stdexcept>
 
+#include "common/math/whitening.h"
 #include "fgo/marginal_prior_model.h"
 #include "fgo/model_cost_function.h"
 #include "fgo/right_quaternion_manifold.h"
 
 namespace giocal {
-namespace {
-
-/// Whitening S with S^T S = C^-1 (lower Cholesky factor of C inverted).
-Eigen::MatrixXd whitener(const Eigen::MatrixXd& C) {
-  const Eigen::LLT<Eigen::MatrixXd> llt(C);
-  const Eigen::MatrixXd L = llt.matrixL();
-  return L.triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(C.rows(), C.cols()));
-}
-
-}  // namespace
 
 void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& value) {
   if (has(block.name)) throw std::invalid_argument("window variable '" + block.name + "' exists");
@@ -157,7 +148,7 @@ std::map<std::string, int> SlidingWindow::tangentOffsets(const std::vector<std::
 
 void SlidingWindow::forEachWhitenedFactor(const std::map<std::string, int>& offset,
                                           const std::vector<const Factor*>& factors,
-                                          const FactorVisitor& visit, Eigen::VectorXd& b) const {
+                                          const FactorVisitor& visit, Eigen::VectorXd* b) const {
   std::vector<Segment> segments;
   for (const Factor* f : factors) {
     std::vector<const double*> params;
@@ -182,13 +173,14 @@ void SlidingWindow::forEachWhitenedFactor(const std::map<std::string, int>& offs
     for (size_t i = 0; i < segments.size(); ++i) {
       Jf.middleCols(segments[i].local, segments[i].size) = J[blocks[i]];
     }
-    const Eigen::MatrixXd S = whitener(f->model->covariance());
+    const Eigen::MatrixXd S = whitener(f->model->covariance(), f->model->name());
     const Eigen::MatrixXd Jw = S * Jf;
-    const Eigen::VectorXd g = Jw.transpose() * (S * r);
-    const Eigen::MatrixXd Hf = Jw.transpose() * Jw;
-    for (const Segment& seg : segments)
-      b.segment(seg.global, seg.size) += g.segment(seg.local, seg.size);
-    visit(segments, Hf);
+    if (b) {
+      const Eigen::VectorXd g = Jw.transpose() * (S * r);
+      for (const Segment& seg : segments)
+        b->segment(seg.global, seg.size) += g.segment(seg.local, seg.size);
+    }
+    visit(segments, Jw.transpose() * Jw);
   }
 }
 
@@ -209,7 +201,7 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
           }
         }
       },
-      b);
+      &b);
 }
 
 Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
@@ -231,7 +223,6 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
   // ~15x cheaper than Eigen's own AMD (measured, README).
   // CHOLMOD reads the lower triangle only.
   std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
   forEachWhitenedFactor(
       offset, all,
       [&](const std::vector<Segment>& segments, const Eigen::MatrixXd& Hf) {
@@ -246,7 +237,7 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
           }
         }
       },
-      b);
+      nullptr);
   Eigen::SparseMatrix<double> H(n, n);
   H.setFromTriplets(triplets.begin(), triplets.end());
   Eigen::MatrixXd X;

@@ -72,10 +72,10 @@ class SlidingWindow {
   /// Tangent offset of each of `order`'s variables; `size` gets the total.
   std::map<std::string, int> tangentOffsets(const std::vector<std::string>& order, int* size) const;
   /// Whitens and linearizes `factors` at the current values, handing each factor's J^T J to
-  /// `visit` and adding J^T r into b; variables not in `offset` are ignored.
+  /// `visit` and adding J^T r into *b unless b is null; variables not in `offset` are ignored.
   void forEachWhitenedFactor(const std::map<std::string, int>& offset,
                              const std::vector<const Factor*>& factors, const FactorVisitor& visit,
-                             Eigen::VectorXd& b) const;
+                             Eigen::VectorXd* b) const;
 
   struct Variable {
     StateBlock block;

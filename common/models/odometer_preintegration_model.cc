@@ -1,8 +1,6 @@
 #include "common/models/odometer_preintegration_model.h"
 
-#include <Eigen/Cholesky>
-#include <stdexcept>
-
+#include "common/math/whitening.h"
 #include "common/models/block_values.h"
 
 namespace giocal {
@@ -19,13 +17,8 @@ const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
   return kBlocks;
 }
 
-Eigen::Matrix<double, 6, 6> OdometerPreintegrationModel::whitener(double s_v, double s_w) const {
-  const Eigen::LLT<Eigen::Matrix<double, 6, 6>> llt(pre_->covarianceAt(s_v, s_w));
-  if (llt.info() != Eigen::Success) {
-    throw std::runtime_error("odometer preintegration: covariance not positive definite");
-  }
-  const Eigen::Matrix<double, 6, 6> L = llt.matrixL();
-  return L.triangularView<Eigen::Lower>().solve(Eigen::Matrix<double, 6, 6>::Identity());
+Eigen::Matrix<double, 6, 6> OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {
+  return whitener(pre_->covarianceAt(s_v, s_w), name());
 }
 
 void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
@@ -37,15 +30,17 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
   c.q_b_m = quatAt(params[7]);
   const OdometerResidual r =
       pre_->evaluate(vec3At(params[0]), quatAt(params[1]), vec3At(params[2]), quatAt(params[3]), c);
-  const Eigen::Matrix<double, 6, 6> W = whitener(c.s_v, c.s_w);
+  const Eigen::Matrix<double, 6, 6> W = whitenerAt(c.s_v, c.s_w);
   residual = W * r.r;
   if (jacobians) {
     *jacobians = {W * r.J_p_i, W * r.J_q_i, W * r.J_p_j,   W * r.J_q_j,
                   W * r.J_s_v, W * r.J_s_w, W * r.J_p_b_m, W * r.J_q_b_m};
     // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
     const double h = 1e-6;
-    (*jacobians)[4] += (whitener(c.s_v + h, c.s_w) - whitener(c.s_v - h, c.s_w)) * r.r / (2 * h);
-    (*jacobians)[5] += (whitener(c.s_v, c.s_w + h) - whitener(c.s_v, c.s_w - h)) * r.r / (2 * h);
+    (*jacobians)[4] +=
+        (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * r.r / (2 * h);
+    (*jacobians)[5] +=
+        (whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h)) * r.r / (2 * h);
   }
 }
 

@@ -30,7 +30,7 @@ class OdometerPreintegrationModel : public MeasurementModel {
 
  private:
   /// W with W^T W = covariance^-1 at these scales.
-  Eigen::Matrix<double, 6, 6> whitener(double s_v, double s_w) const;
+  Eigen::Matrix<double, 6, 6> whitenerAt(double s_v, double s_w) const;
   std::shared_ptr<const OdometerPreintegration> pre_;
 };
 

@@ -417,7 +417,7 @@ struct NoisyYawRateIntervals {
   explicit NoisyYawRateIntervals(std::uint64_t seed) {
     OdometerPreintegrationNoise noise;
     noise.yaw_rate_sigma = 3.0 * kDegToRad;
-    std::mt19937_64 rng(seed);
+    std::mt19937_64 draws(seed);
     std::normal_distribution<double> n01(0.0, 1.0);
     for (int k = 0; k < 2000; ++k) {
       const double w = (k % 5 == 0 ? 0.15 : 0.0) / (1.0 + kSw);  // as read, noise-free
@@ -425,7 +425,7 @@ struct NoisyYawRateIntervals {
       auto measured = std::make_shared<OdometerPreintegration>(noise, 0.0, 0.0);
       for (int i = 0; i < 50; ++i) {
         truth.integrate(0.02, 1.5, w);
-        measured->integrate(0.02, 1.5, w + noise.yaw_rate_sigma * n01(rng));
+        measured->integrate(0.02, 1.5, w + noise.yaw_rate_sigma * n01(draws));
       }
       pre.push_back(measured);
       p_j.push_back(truth.deltaP_m(0.0, kSw));
