@@ -6,11 +6,14 @@
 //                           [--config <yaml>] [--estimator ekf|fgo]
 //                           [--arw-deg-sqrt-h A] [--gyro-bias-deg-h B]   (override the preset's
 //                           gyro) [--straight-s S]   (duration of the preset's straight
-//                           segments) [--guess-at-truth 1]   (start from the true calibration,
-//                           keeping the prior sigma: a diagnostic of linearization, see README)
+//                           segments) [--arc-s S]   (of its arcs; 0 drops them: a drive that
+//                           never turns, README) [--guess-at-truth 1]   (start from the true
+//                           calibration, keeping the prior sigma: a diagnostic of linearization,
+//                           see README)
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -79,7 +82,7 @@ int main(int argc, char** argv) {
   std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
   int seeds = 20, first = 1;
   std::string config;
-  double arw = -1.0, gyro_bias = -1.0, straight_s = -1.0;  // negative: the preset's
+  double arw = -1.0, gyro_bias = -1.0, straight_s = -1.0, arc_s = -1.0;  // negative: the preset's
   bool guess_at_truth = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
@@ -97,6 +100,8 @@ int main(int argc, char** argv) {
       gyro_bias = std::stod(v);
     else if (k == "--straight-s")
       straight_s = std::stod(v);
+    else if (k == "--arc-s")
+      arc_s = std::stod(v);
     else if (k == "--guess-at-truth")
       guess_at_truth = std::stoi(v) != 0;
     else if (k == "--estimator")
@@ -113,6 +118,16 @@ int main(int argc, char** argv) {
     for (giocal::sim::SegmentSpec& s : cfg.segments) {
       if (s.type == "straight") s.duration = straight_s;
     }
+  }
+  if (arc_s >= 0.0) {
+    for (giocal::sim::SegmentSpec& s : cfg.segments) {
+      if (s.type == "arc") s.duration = arc_s;
+    }
+    cfg.segments.erase(std::remove_if(cfg.segments.begin(), cfg.segments.end(),
+                                      [](const giocal::sim::SegmentSpec& s) {
+                                        return s.type == "arc" && !(s.duration > 0.0);
+                                      }),
+                       cfg.segments.end());
   }
   const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
   const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
@@ -194,7 +209,9 @@ int main(int argc, char** argv) {
       "\nMean absolute calibration errors over %d seeds (%s%s; gyro ARW %g deg/sqrt(h), bias %g "
       "deg/h%s)\n",
       seeds, preset.c_str(),
-      straight_s >= 0.0 ? (", straight " + std::to_string(straight_s) + " s").c_str() : "",
+      (straight_s >= 0.0 ? ", straight " + std::to_string(straight_s) + " s" : std::string())
+          .append(arc_s >= 0.0 ? ", arcs " + std::to_string(arc_s) + " s" : std::string())
+          .c_str(),
       cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
       guess_at_truth ? "; initial guess at the truth" : "");
   std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",

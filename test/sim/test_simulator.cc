@@ -1,7 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -148,20 +146,6 @@ TEST(Simulator, NoisyPresetHasTheConfiguredErrorLevels) {
   EXPECT_NEAR(noisy.truth.back().t - noisy.truth.front().t, 150.0, 1.0);
   EXPECT_NEAR(clean.true_speed[static_cast<size_t>(30 * 25)], 0.25, 1e-9);
   EXPECT_EQ(clean.true_speed[static_cast<size_t>(10 * 25)], 0.0);
-}
-
-TEST(Simulator, StraightPresetNeverTurns) {
-  // config/sim/straight.yaml is bench/'s check of the weakly observable states: it is only that
-  // if the vehicle never turns once moving.
-  const sim::SimConfig cfg =
-      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/straight.yaml");
-  const sim::SimulatedLogs logs = sim::simulate(cfg, 5);
-  EXPECT_NEAR(logs.truth.back().t - logs.truth.front().t, 150.0, 1.0);
-  double max_rate = 0.0;
-  ASSERT_FALSE(logs.true_yaw_rate.empty());
-  for (double w : logs.true_yaw_rate) max_rate = std::max(max_rate, std::abs(w));
-  EXPECT_LT(max_rate, 1e-9);
-  EXPECT_NEAR(logs.true_speed.back(), 0.25, 1e-9);
 }
 
 std::string slurp(const std::string& path) {
