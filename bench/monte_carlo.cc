@@ -114,21 +114,23 @@ int main(int argc, char** argv) {
   giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
   if (arw >= 0.0) cfg.imu.arw_deg_sqrt_h = arw;
   if (gyro_bias >= 0.0) cfg.imu.gyro_bias_deg_h = gyro_bias;
-  if (straight_s >= 0.0) {
+  // Segments of `type` last `duration` s; 0 drops them.
+  const auto setDuration = [&cfg](const std::string& type, double duration) {
+    if (duration < 0.0) return;
     for (giocal::sim::SegmentSpec& s : cfg.segments) {
-      if (s.type == "straight") s.duration = straight_s;
-    }
-  }
-  if (arc_s >= 0.0) {
-    for (giocal::sim::SegmentSpec& s : cfg.segments) {
-      if (s.type == "arc") s.duration = arc_s;
+      if (s.type == type) s.duration = duration;
     }
     cfg.segments.erase(std::remove_if(cfg.segments.begin(), cfg.segments.end(),
-                                      [](const giocal::sim::SegmentSpec& s) {
-                                        return s.type == "arc" && !(s.duration > 0.0);
+                                      [&type](const giocal::sim::SegmentSpec& s) {
+                                        return s.type == type && !(s.duration > 0.0);
                                       }),
                        cfg.segments.end());
-  }
+  };
+  setDuration("straight", straight_s);
+  setDuration("arc", arc_s);
+  std::string edits;
+  if (straight_s >= 0.0) edits += ", straight " + std::to_string(straight_s) + " s";
+  if (arc_s >= 0.0) edits += ", arcs " + std::to_string(arc_s) + " s";
   const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
   const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
   std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
@@ -208,11 +210,7 @@ int main(int argc, char** argv) {
   std::printf(
       "\nMean absolute calibration errors over %d seeds (%s%s; gyro ARW %g deg/sqrt(h), bias %g "
       "deg/h%s)\n",
-      seeds, preset.c_str(),
-      (straight_s >= 0.0 ? ", straight " + std::to_string(straight_s) + " s" : std::string())
-          .append(arc_s >= 0.0 ? ", arcs " + std::to_string(arc_s) + " s" : std::string())
-          .c_str(),
-      cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
+      seeds, preset.c_str(), edits.c_str(), cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
       guess_at_truth ? "; initial guess at the truth" : "");
   std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",
               "roll deg", "pitch", "yaw", "V scale", "W scale", "NEES7", "fix %", "x real");
