@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/calibration/initial_state.h"
+#include "common/calibration/weak_directions.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/math/rotation.h"
 #include "ekf/calibration_filter.h"
@@ -178,6 +179,9 @@ CalibrationRun runEkfCalibration(const CalibrationInputs& in, const CalibrationO
   if (run.history.empty() || run.history.back().t < filter->time()) {
     run.history.push_back(filter->calibration());
   }
+  for (const std::string& w :
+       weakDirections(run.history.back(), in.description.initial_calibration))
+    warn(run, w);
   run.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.timing["gnss_updates_s"] = gnss_time;
   return run;

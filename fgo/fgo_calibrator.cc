@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "common/calibration/initial_state.h"
+#include "common/calibration/weak_directions.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
@@ -657,6 +658,11 @@ CalibrationRun runFgoCalibration(const CalibrationInputs& in, const CalibrationO
     run.fixed_epochs += fixed;
   }
   run.timing["mean_epoch_s"] = solved ? epoch_time / solved : 0.0;
+  if (!run.history.empty()) {
+    for (const std::string& w :
+         weakDirections(run.history.back(), in.description.initial_calibration))
+      run.warnings.push_back(w);
+  }
   run.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -58,7 +58,10 @@ TEST(EkfCalibrator, CalibratesThePaperSimulationOnTwoSeeds) {
     EXPECT_NEAR(run.history.back().calib.p_b_m.z(), prior.mean.p_b_m.z(), 1e-12);
     EXPECT_NEAR(std::sqrt(run.history.back().cov(calib_index::kP + 2, calib_index::kP + 2)),
                 prior.sd_p_b_m.z(), 1e-12);
-    EXPECT_TRUE(run.warnings.empty()) << run.warnings.front();
+    // No bad-data warning; the one finding is that this drive holds little on the extrinsic yaw
+    // (its sigma ends near half the prior's).
+    ASSERT_EQ(run.warnings.size(), 1u) << run.warnings.front();
+    EXPECT_EQ(run.warnings[0].rfind("yaw of q_b_m is weakly observed", 0), 0u) << run.warnings[0];
   }
 }
 
