@@ -3,7 +3,7 @@
 #include <array>
 #include <cstdio>
 
-#include "common/math/rotation.h"
+#include "common/calibration/initial_state.h"
 
 namespace giocal {
 
@@ -11,24 +11,22 @@ std::vector<std::string> weakDirections(const CalibrationEstimate& final,
                                         const CalibrationPrior& prior, double fraction) {
   // calibration.csv's order: s_v, s_w, p_b_m x, y, z [m], roll, pitch, yaw [deg].
   const Eigen::Matrix<double, 8, 1> sd = final.sigma();
-  const Eigen::Vector3d rpy0 = prior.sd_rpy_b_m * kRadToDeg;
-  const std::array<double, 8> sd0{
-      prior.sd_s_v,       prior.sd_s_w, prior.sd_p_b_m.x(), prior.sd_p_b_m.y(),
-      prior.sd_p_b_m.z(), rpy0.x(),     rpy0.y(),           rpy0.z()};
+  const Eigen::Matrix<double, 8, 1> sd0 =
+      CalibrationEstimate{0.0, prior.mean, priorCalibrationCovariance(prior)}.sigma();
   const std::array<const char*, 8> name{
       "s_v",     "s_w",           "p_b_m.x",        "p_b_m.y",
       "p_b_m.z", "roll of q_b_m", "pitch of q_b_m", "yaw of q_b_m"};
   const std::array<const char*, 8> unit{"", "", " m", " m", " m", " deg", " deg", " deg"};
   std::vector<std::string> out;
   for (int k = 0; k < 8; ++k) {
-    if (k == calib_index::kP + 2 || sd0[k] <= 0.0 || !(sd(k) > fraction * sd0[k])) continue;
+    if (k == calib_index::kP + 2 || sd0(k) <= 0.0 || !(sd(k) > fraction * sd0(k))) continue;
     char buf[400];
     std::snprintf(buf, sizeof buf,
                   "%s is weakly observed on this drive: 1-sigma %.3g%s against the prior's %.3g%s. "
                   "The estimate stays near the initial guess, and along such a direction the "
                   "reported sigma has been measured too small (README, Measured). More turning "
                   "and acceleration, or a better gyro, help",
-                  name[k], sd(k), unit[k], sd0[k], unit[k]);
+                  name[k], sd(k), unit[k], sd0(k), unit[k]);
     out.emplace_back(buf);
   }
   return out;

@@ -1,20 +1,14 @@
 #include <gtest/gtest.h>
 
+#include "common/calibration/initial_state.h"
 #include "common/calibration/weak_directions.h"
-#include "common/math/rotation.h"
 
 namespace giocal {
 namespace {
 
-/// A final estimate at the identity rotation whose sigma is `f` times the prior's in every state.
+/// A final estimate at the prior's mean whose sigma is `f` times the prior's in every state.
 CalibrationEstimate scaledPrior(const CalibrationPrior& prior, double f) {
-  CalibrationEstimate e;
-  const Eigen::Matrix<double, 8, 1> sd = (Eigen::Matrix<double, 8, 1>() << prior.sd_s_v,
-                                          prior.sd_s_w, prior.sd_p_b_m, prior.sd_rpy_b_m)
-                                             .finished() *
-                                         f;
-  e.cov = sd.cwiseAbs2().asDiagonal();
-  return e;
+  return CalibrationEstimate{0.0, prior.mean, f * f * priorCalibrationCovariance(prior)};
 }
 
 TEST(WeakDirections, NamesOnlyTheStatesTheDataBarelyInform) {
