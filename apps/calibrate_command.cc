@@ -1,26 +1,25 @@
 #include "apps/calibrate_command.h"
 
-#include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
 #include <stdexcept>
 
-#include "common/calibration/calibration_inputs.h"
+#include "apps/live_run_writer.h"
 #include "common/calibration/calibration_options.h"
 #include "common/math/rotation.h"
-#include "ekf/ekf_calibrator.h"
-#include "fgo/fgo_calibrator.h"
+#include "replay/estimator_factory.h"
+#include "replay/replay.h"
 
 namespace giocal {
 
 void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibration* truth,
                              std::ostream& out) {
-  if (run.history.empty()) {
+  if (!run.latest) {
     out << run.estimator << ": no calibration estimate\n";
     return;
   }
-  const CalibrationEstimate& e = run.history.back();
+  const CalibrationEstimate& e = *run.latest;
   const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
   const Eigen::Matrix<double, 8, 1> sd = e.sigma();
   CalibrationError err;
@@ -51,9 +50,11 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
 }
 
 CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
-  if (job.estimator != "ekf" && job.estimator != "fgo") {
-    throw std::invalid_argument("--estimator must be ekf or fgo, not '" + job.estimator + "'");
-  }
+  ReplayJob replay;
+  replay.estimator = job.estimator;
+  replay.options = readCalibrationOptions(job.config);
+  replay.fgo_options = readFgoOptions(job.config);
+  coreFactory(job.estimator, replay.options);  // an unknown estimator fails before any output
   if (!job.overwrite) {
     for (const std::string& f : calibrationOutputFiles()) {
       if (std::filesystem::exists(job.out + "/" + f)) {
@@ -62,18 +63,11 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
       }
     }
   }
-  const CalibrationOptions options = readCalibrationOptions(job.config);
-  const auto t0 = std::chrono::steady_clock::now();
-  const CalibrationInputs inputs = loadCalibrationInputs(job.data);
-  const double load_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  CalibrationRun run = job.estimator == "fgo"
-                           ? runFgoCalibration(inputs, options, readFgoOptions(job.config))
-                           : runEkfCalibration(inputs, options);
-  run.load_time_s = load_s;
-  const OdometerCalibration* truth = inputs.truth ? &inputs.truth->calib : nullptr;
-  writeCalibrationRun(job.out, run, truth);
-  printCalibrationSummary(run, truth, log);
+  LiveRunWriter writer(job.out, job.estimator, log);
+  const CalibrationRun run = replayFolder(job.data, replay, &writer);
+  const std::optional<TruthCalibration> truth = readFolderTruth(job.data);
+  writer.commit(run, truth ? &truth->calib : nullptr);
+  printCalibrationSummary(run, truth ? &truth->calib : nullptr, log);
   log << "  outputs: " << job.out << "/{calibration.csv, trajectory.csv, summary.json}\n";
   return run;
 }

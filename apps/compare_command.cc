@@ -1,6 +1,5 @@
 #include "apps/compare_command.h"
 
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -8,11 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/calibration/calibration_inputs.h"
+#include "apps/live_run_writer.h"
 #include "common/io/atomic_file.h"
 #include "common/math/rotation.h"
-#include "ekf/ekf_calibrator.h"
-#include "fgo/fgo_calibrator.h"
+#include "replay/replay.h"
 
 namespace giocal {
 namespace {
@@ -34,17 +32,18 @@ void runCompare(const CompareJob& job, std::ostream& log) {
       }
     }
   }
-  const CalibrationOptions options = readCalibrationOptions(job.config);
-  const auto t0 = std::chrono::steady_clock::now();
-  const CalibrationInputs in = loadCalibrationInputs(job.data);
-  const double load_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  CalibrationRun runs[2] = {runEkfCalibration(in, options),
-                            runFgoCalibration(in, options, readFgoOptions(job.config))};
-  const OdometerCalibration* truth = in.truth ? &in.truth->calib : nullptr;
-  for (CalibrationRun& r : runs) {
-    r.load_time_s = load_s;
-    writeCalibrationRun(out + "/" + r.estimator, r, truth);
+  ReplayJob replay;
+  replay.options = readCalibrationOptions(job.config);
+  replay.fgo_options = readFgoOptions(job.config);
+  const std::optional<TruthCalibration> truth_file = readFolderTruth(job.data);
+  const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
+  CalibrationRun runs[2];
+  const char* estimators[2] = {"ekf", "fgo"};
+  for (int a = 0; a < 2; ++a) {
+    replay.estimator = estimators[a];
+    LiveRunWriter writer(out + "/" + estimators[a], estimators[a], log);
+    runs[a] = replayFolder(job.data, replay, &writer);
+    writer.commit(runs[a], truth);
   }
 
   std::vector<Row> rows;
@@ -52,7 +51,7 @@ void runCompare(const CompareJob& job, std::ostream& log) {
                           "p_b_m.z [m]", "roll [deg]", "pitch [deg]", "yaw [deg]"};
   for (int i = 0; i < 8; ++i) rows.push_back({names[i], {}, {}, {}});
   for (int a = 0; a < 2; ++a) {
-    const CalibrationEstimate& e = runs[a].history.back();
+    const CalibrationEstimate& e = runs[a].final();
     const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
     const Eigen::Matrix<double, 8, 1> sd = e.sigma();
     const double v[8] = {e.calib.s_v,       e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),

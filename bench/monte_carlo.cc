@@ -28,8 +28,8 @@
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/initial_state.h"
 #include "common/math/rotation.h"
-#include "ekf/ekf_calibrator.h"
-#include "fgo/fgo_calibrator.h"
+#include "replay/estimator_factory.h"
+#include "replay/replay.h"
 #include "sim/simulator.h"
 
 namespace {
@@ -133,11 +133,13 @@ int main(int argc, char** argv) {
   if (arc_s >= 0.0) edits += ", arcs " + std::to_string(arc_s) + " s";
   const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
   const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
-  std::map<std::string, Runner> estimators{{"ekf", giocal::runEkfCalibration}};
-  estimators["fgo"] = [&](const giocal::CalibrationInputs& in,
-                          const giocal::CalibrationOptions& o) {
-    return giocal::runFgoCalibration(in, o, fgo_options);
-  };
+  std::map<std::string, Runner> estimators;
+  for (const std::string& name : giocal::estimatorNames()) {
+    estimators[name] = [name, &fgo_options](const giocal::CalibrationInputs& in,
+                                            const giocal::CalibrationOptions& o) {
+      return giocal::replayInputs(in, {name, o, fgo_options}, nullptr);
+    };
+  }
   std::string only;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (std::string(argv[i]) == "--estimator") only = argv[i + 1];
@@ -174,7 +176,8 @@ int main(int argc, char** argv) {
     t.nees.push_back(e.nees7);
     if (r) {
       t.wall.push_back(r->wall_time_s);
-      if (r->timing.count("mean_epoch_s")) t.epoch.push_back(r->timing.at("mean_epoch_s"));
+      if (r->timing.count("gnss_epoch_mean_s"))
+        t.epoch.push_back(r->timing.at("gnss_epoch_mean_s"));
       t.rtf.push_back(r->data_duration_s / r->wall_time_s);
       t.fix.push_back(100.0 * r->fixRate());
     }
@@ -203,7 +206,7 @@ int main(int argc, char** argv) {
         ++tally[name].failures;
         continue;
       }
-      score(seed, name, r.history.back(), in.truth->calib, &r);
+      score(seed, name, r.final(), in.truth->calib, &r);
     }
   }
   std::filesystem::remove_all(work);

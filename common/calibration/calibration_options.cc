@@ -56,6 +56,20 @@ CalibrationOptions readCalibrationOptions(const std::string& path) {
   o.init.velocity_sigma = y.numberOr(i + "velocity_sigma", o.init.velocity_sigma, 1e-4, 10.0);
   o.init.attitude_sigma_deg =
       y.numberOr(i + "attitude_sigma_deg", o.init.attitude_sigma_deg, 1e-3, 90.0);
+  const std::string n = "online.";
+  OnlineOptions& on = o.online;
+  on.reorder_lag_s = y.numberOr(n + "reorder_lag_s", on.reorder_lag_s, 0.0, 60.0);
+  on.max_imu_wait_s = y.numberOr(n + "max_imu_wait_s", on.max_imu_wait_s, 0.1, 600.0);
+  on.max_init_window_s = y.numberOr(n + "max_init_window_s", on.max_init_window_s, 10.0, 1e5);
+  on.progress_interval_s = y.numberOr(n + "progress_interval_s", on.progress_interval_s, 1.0, 1e6);
+  const std::string c = n + "convergence.";
+  ConvergenceOptions& cv = on.convergence;
+  cv.sigma_scale = y.numberOr(c + "sigma_scale", cv.sigma_scale, 1e-6, 1.0);
+  cv.sigma_lever_m = y.numberOr(c + "sigma_lever_m", cv.sigma_lever_m, 1e-5, 10.0);
+  cv.sigma_roll_pitch_deg =
+      y.numberOr(c + "sigma_roll_pitch_deg", cv.sigma_roll_pitch_deg, 1e-4, 90.0);
+  cv.sigma_yaw_deg = y.numberOr(c + "sigma_yaw_deg", cv.sigma_yaw_deg, 1e-4, 90.0);
+  cv.steady_s = y.numberOr(c + "steady_s", cv.steady_s, 0.0, 1e5);
   return o;
 }
 

@@ -9,6 +9,7 @@
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
 #include "common/io/model_options.h"
+#include "common/online/convergence.h"
 
 namespace giocal {
 
@@ -22,6 +23,20 @@ struct InitOptions {
   double max_turn_deg = 20.0;          // yaw change allowed over that travel [deg]
   double velocity_sigma = 0.05;        // initial velocity 1-sigma [m/s]
   double attitude_sigma_deg = 1.0;     // roll and pitch 1-sigma without a static window [deg]
+};
+
+/// The online calibrator's buffering and its live reports ("online" section).
+struct OnlineOptions {
+  // Data are put back in time order across sensors within this lag behind the newest datum;
+  // anything older on arrival is counted and dropped [s].
+  double reorder_lag_s = 0.5;
+  // Odometer and GNSS events wait this long (data time) for IMU samples past them; then, the IMU
+  // being silent, they are dropped with a warning [s].
+  double max_imu_wait_s = 2.0;
+  // Initialization searches at most this far back; older data are let go [s].
+  double max_init_window_s = 600.0;
+  double progress_interval_s = 60.0;  // live report of what has not converged yet [s]
+  ConvergenceOptions convergence;
 };
 
 struct CalibrationOptions {
@@ -57,6 +72,7 @@ struct CalibrationOptions {
   double max_imu_gap_s = 0.5;       // longer IMU gaps are reported (and bridged) [s]
   double max_base_offset = 0.5;     // "rtk" section: largest rover-base time-tag gap [s]
   double divergence_sigma = 50.0;   // DD code innovations this many sigma off: diverged
+  OnlineOptions online;
 };
 
 /// Defaults, overridden by the keys present in `path` (empty: defaults only). Throws DataError

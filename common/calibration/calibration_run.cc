@@ -2,12 +2,11 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
 
-#include "common/io/atomic_file.h"
-#include "common/io/csv_table.h"
 #include "common/math/rotation.h"
 
 namespace giocal {
@@ -90,27 +89,55 @@ std::vector<std::string> calibrationOutputFiles() {
   return {"calibration.csv", "trajectory.csv", "summary.json"};
 }
 
-void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
-                         const OdometerCalibration* truth) {
-  std::filesystem::create_directories(folder);
-  std::vector<std::vector<double>> rows;
-  for (const CalibrationEstimate& e : run.history) {
-    const Eigen::Vector3d rpy = rpyDeg(e.calib.q_b_m);
-    const Eigen::Matrix<double, 8, 1> sd = e.sigma();
-    rows.push_back({e.t, e.calib.s_v, e.calib.s_w, e.calib.p_b_m.x(), e.calib.p_b_m.y(),
-                    e.calib.p_b_m.z(), rpy.x(), rpy.y(), rpy.z(), sd[0], sd[1], sd[2], sd[3], sd[4],
-                    sd[5], sd[6], sd[7]});
-  }
-  writeCsvTable(folder + "/calibration.csv",
-                {"t", "s_v", "s_w", "px", "py", "pz", "roll", "pitch", "yaw", "sd_s_v", "sd_s_w",
-                 "sd_px", "sd_py", "sd_pz", "sd_roll", "sd_pitch", "sd_yaw"},
-                rows);
-  writeTruthCsv(folder + "/trajectory.csv", run.trajectory);
+long CalibrationRun::counter(Counter c) const {
+  const auto it = counters.find(counterName(c));
+  return it == counters.end() ? 0 : it->second;
+}
 
+void CalibrationRun::warn(const std::string& w) {
+  if (warnings.size() < kMaxWarnings) warnings.push_back(w);
+  if (warnings.size() == kMaxWarnings) warnings.push_back("(further warnings omitted)");
+}
+
+const CalibrationEstimate& CalibrationRun::final() const {
+  if (!latest) throw std::logic_error(estimator + ": the run produced no calibration estimate");
+  return *latest;
+}
+
+const std::vector<std::string>& calibrationCsvHeader() {
+  static const std::vector<std::string> h{
+      "t",      "s_v",    "s_w",   "px",    "py",    "pz",      "roll",     "pitch", "yaw",
+      "sd_s_v", "sd_s_w", "sd_px", "sd_py", "sd_pz", "sd_roll", "sd_pitch", "sd_yaw"};
+  return h;
+}
+
+std::vector<double> calibrationCsvRow(const CalibrationEstimate& e) {
+  const Eigen::Vector3d rpy = rpyDeg(e.calib.q_b_m);
+  const Eigen::Matrix<double, 8, 1> sd = e.sigma();
+  return {e.t,
+          e.calib.s_v,
+          e.calib.s_w,
+          e.calib.p_b_m.x(),
+          e.calib.p_b_m.y(),
+          e.calib.p_b_m.z(),
+          rpy.x(),
+          rpy.y(),
+          rpy.z(),
+          sd[0],
+          sd[1],
+          sd[2],
+          sd[3],
+          sd[4],
+          sd[5],
+          sd[6],
+          sd[7]};
+}
+
+std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth) {
   nlohmann::ordered_json j;
   j["estimator"] = run.estimator;
-  if (!run.history.empty()) {
-    const CalibrationEstimate& e = run.history.back();
+  if (run.latest) {
+    const CalibrationEstimate& e = *run.latest;
     const Eigen::Quaterniond& q = e.calib.q_b_m;
     j["final"] = {{"s_v", e.calib.s_v},
                   {"s_w", e.calib.s_w},
@@ -134,29 +161,30 @@ void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
   j["real_time_factor"] = run.wall_time_s > 0 ? run.data_duration_s / run.wall_time_s : 0.0;
   j["t_initialized"] = run.t_initialized;
   j["p_b_m_z"] = run.p_b_m_z;
-  if (!run.history.empty()) {
+  if (run.latest) {
     // Full tangent covariance [s_v, s_w, p_b_m, theta_b_m] for consistency checks (NEES).
-    const auto& C = run.history.back().cov;
+    const auto& C = run.latest->cov;
     std::vector<std::vector<double>> cov(8);
     for (int r = 0; r < 8; ++r)
       for (int c = 0; c < 8; ++c) cov[static_cast<size_t>(r)].push_back(C(r, c));
     j["covariance_tangent"] = cov;
   }
   j["initialization"] = run.initialization;
+  j["converged_at"] = run.converged_at;
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;
-  if (truth && !run.history.empty()) {
-    const CalibrationError err = calibrationError(run.history.back(), *truth);
+  if (truth && run.latest) {
+    const CalibrationError err = calibrationError(*run.latest, *truth);
     j["error"] = {{"s_v", err.s_v},
                   {"s_w", err.s_w},
                   {"p_b_m", vec(err.p_b_m)},
                   {"rpy_b_m_deg", vec(err.rpy * kRadToDeg)},
                   {"nees7", err.nees7}};
   }
-  AtomicFile f(folder + "/summary.json");
-  f.stream() << std::setprecision(12) << j.dump(2) << "\n";
-  f.commit();
+  std::ostringstream out;
+  out << std::setprecision(12) << j.dump(2) << "\n";
+  return out.str();
 }
 
 }  // namespace giocal

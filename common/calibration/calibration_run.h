@@ -5,9 +5,11 @@
 
 #include <Eigen/Core>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "common/calibration/run_counter.h"
 #include "common/geodesy/wgs84.h"
 #include "common/imu/nav_state.h"
 #include "common/io/dataset_description.h"
@@ -35,9 +37,8 @@ struct CalibrationEstimate {
 };
 
 struct CalibrationRun {
-  std::string estimator;  // "ekf" or "fgo"
-  std::vector<CalibrationEstimate> history;
-  std::vector<TruthSample> trajectory;
+  std::string estimator;                      // "ekf" or "fgo"
+  std::optional<CalibrationEstimate> latest;  // the newest calibration estimate
   double data_duration_s = 0.0;
   double wall_time_s = 0.0;                      // estimator time, reading the files excluded
   double load_time_s = 0.0;                      // reading and checking the dataset files
@@ -46,12 +47,19 @@ struct CalibrationRun {
   int fixed_epochs = 0;                          // of those, epochs with validated ambiguity fixes
   std::string p_b_m_z;                           // how the unobservable p_b_m.z was treated
   std::map<std::string, double> initialization;  // static window, heading baseline and sigma
-  std::map<std::string, long> counters;
-  std::map<std::string, double>
-      timing;  // wall time of parts of the run [s]  // rejected rows, outliers, resets, ...
-  std::vector<std::string> warnings;  // bad data met on the way, divergence
+  std::map<std::string, long> counters;          // Counter names -> tallies
+  std::map<std::string, double> timing;          // wall time of parts of the run [s]
+  std::map<std::string, double> converged_at;    // parameter -> data time it converged [s]
+  std::vector<std::string> warnings;             // bad data met on the way, divergence (capped)
 
   double fixRate() const { return gnss_epochs ? double(fixed_epochs) / gnss_epochs : 0.0; }
+  void count(Counter c, long n = 1) { counters[counterName(c)] += n; }
+  long counter(Counter c) const;
+  /// Adds a warning; after kMaxWarnings the rest are only counted as omitted.
+  void warn(const std::string& w);
+  /// The newest estimate; throws std::logic_error when the run has none.
+  const CalibrationEstimate& final() const;
+  static constexpr size_t kMaxWarnings = 20;
 };
 
 /// Estimate minus truth: scales, p_b_m [m], roll/pitch/yaw difference [rad], the tangent error
@@ -66,9 +74,12 @@ struct CalibrationError {
 CalibrationError calibrationError(const CalibrationEstimate& estimate,
                                   const OdometerCalibration& truth);
 
-/// Writes the three output files into `folder` (created if needed), each atomically.
-void writeCalibrationRun(const std::string& folder, const CalibrationRun& run,
-                         const OdometerCalibration* truth = nullptr);
+/// summary.json of a run (the brief's keys and giocal's, see the README), `truth` when known.
+std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth);
+
+/// The calibration.csv header and the row of one estimate.
+const std::vector<std::string>& calibrationCsvHeader();
+std::vector<double> calibrationCsvRow(const CalibrationEstimate& e);
 
 /// A navigation state of the local frame n (origin `frame`) as a truth.csv row: IMU origin in
 /// degrees and metres, velocity and attitude in the local-level ENU frame at that position.

@@ -77,7 +77,7 @@ Eigen::Matrix<double, 8, 8> priorCalibrationCovariance(const CalibrationPrior& p
 std::optional<InitialState> findInitialState(const CalibrationInputs& in,
                                              const CalibrationOptions& options,
                                              const CalibrationPrior& calib_prior, double t_from,
-                                             std::string* why) {
+                                             std::string* why, InitialRtkCache* cache) {
   const DatasetDescription& d = in.description;
   const InitOptions& io = options.init;
   const OdometerCalibration& prior = calib_prior.mean;
@@ -106,11 +106,19 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   const double t_anchor_min = have_static ? ts0 : t_from;
 
   // RTK antenna positions epoch by epoch until the displacement fixes the heading.
-  const BroadcastOrbits orbits(in.nav);
   RtkOptions rtk;
   rtk.dd = options.dd;
   rtk.lambda = options.lambda;
-  RtkFilter filter(orbits, in.base_e, rtk);
+  InitialRtkCache local;
+  InitialRtkCache& rc = cache ? *cache : local;
+  if (!(rc.start == t_anchor_min) || rc.ephemerides != in.nav.ephemerides.size() || !rc.filter) {
+    rc.start = t_anchor_min;
+    rc.ephemerides = in.nav.ephemerides.size();
+    rc.orbits = std::make_unique<BroadcastOrbits>(in.nav);
+    rc.filter = std::make_unique<RtkFilter>(*rc.orbits, in.base_e, rtk);
+    rc.solutions.clear();
+  }
+  size_t solved = 0;  // epochs from t_anchor_min on
   std::optional<AntennaFix> anchor;
   bool anchor_static = false;  // the anchor lies in the static window
   BaseEpochMatcher base(in.base.epochs, rtk.max_base_offset);
@@ -124,7 +132,9 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   int good_epochs = 0;
   for (const ObsEpoch& e : in.rover.epochs) {
     if (e.t < t_anchor_min) continue;
-    const RtkSolution sol = filter.process(e, base.nearest(e.t));
+    const ObsEpoch* base_epoch = base.nearest(e.t);
+    if (solved == rc.solutions.size()) rc.solutions.push_back(rc.filter->process(e, base_epoch));
+    const RtkSolution sol = rc.solutions[solved++];
     if (sol.quality != 1 && sol.quality != 2) continue;
     const Eigen::Matrix3d cov_n = base_frame.R_e_n().transpose() * sol.cov_e * base_frame.R_e_n();
     const AntennaFix fix{e.t, sol.p_e, std::sqrt(0.5 * (cov_n(0, 0) + cov_n(1, 1)))};

@@ -6,12 +6,16 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
 #include "common/geodesy/wgs84.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/rtk.h"
 #include "common/imu/nav_state.h"
 
 namespace giocal {
@@ -29,13 +33,24 @@ struct InitialState {
   double heading_sigma = 0.0;  // [rad], from the displacement alone
 };
 
+/// The antenna's RTK solutions kept between attempts of findInitialState() on growing data (the
+/// online calibrator tries again as epochs arrive): the RTK filter is causal, so the solutions
+/// of the epochs already solved from the same start epoch, with the same orbits, do not change.
+struct InitialRtkCache {
+  double start = NAN;      // time of the first epoch solved
+  size_t ephemerides = 0;  // the orbits' size when the solutions were made
+  std::unique_ptr<BroadcastOrbits> orbits;
+  std::unique_ptr<RtkFilter> filter;
+  std::vector<RtkSolution> solutions;  // of the epochs from `start` on, in order
+};
+
 /// Searches from time `t_from` on, with the calibration `prior` (normally dataset.yaml's). Empty
 /// when the data never allow it (no GNSS solution, the robot never drives far enough); `why` then
-/// says what was missing.
+/// says what was missing. `cache` (optional) carries RTK solutions from an earlier attempt.
 std::optional<InitialState> findInitialState(const CalibrationInputs& in,
                                              const CalibrationOptions& options,
                                              const CalibrationPrior& prior, double t_from,
-                                             std::string* why);
+                                             std::string* why, InitialRtkCache* cache = nullptr);
 
 /// The calibration prior's tangent covariance [s_v, s_w, p_b_m, theta_b_m] from dataset.yaml.
 Eigen::Matrix<double, 8, 8> priorCalibrationCovariance(const CalibrationPrior& prior);

@@ -18,4 +18,14 @@ namespace giocal {
 std::vector<std::string> weakDirections(const CalibrationEstimate& final,
                                         const CalibrationPrior& prior, double fraction = 0.3);
 
+/// The indices (calibration.csv order, calibrationStateName()) of the states weakDirections()
+/// names.
+std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationPrior& prior,
+                            double fraction = 0.3);
+
+/// "s_v", "s_w", "p_b_m.x", ..., "yaw of q_b_m" for index 0..7 of calibration.csv's order, and
+/// the unit of its sigma (" m", " deg" or "").
+const char* calibrationStateName(int k);
+const char* calibrationStateUnit(int k);
+
 }  // namespace giocal

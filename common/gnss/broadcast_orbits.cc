@@ -54,6 +54,26 @@ BroadcastOrbits::BroadcastOrbits(const NavData& nav) : nav_(nav) {
   for (const Ephemeris& e : nav_.ephemerides) by_sat_[e.sat].push_back(&e);
 }
 
+void BroadcastOrbits::add(const Ephemeris& e) {
+  for (const Ephemeris* held : by_sat_[e.sat]) {
+    if (held->toe == e.toe && held->data_source == e.data_source) return;
+  }
+  const Ephemeris* before = nav_.ephemerides.data();
+  nav_.ephemerides.push_back(e);
+  if (nav_.ephemerides.data() == before) {
+    by_sat_[e.sat].push_back(&nav_.ephemerides.back());
+    return;
+  }
+  by_sat_.clear();  // the storage moved
+  for (const Ephemeris& x : nav_.ephemerides) by_sat_[x.sat].push_back(&x);
+}
+
+void BroadcastOrbits::setIonosphere(const NavData& nav) {
+  if (!nav.has_gps_iono) return;
+  nav_.gps_iono = nav.gps_iono;
+  nav_.has_gps_iono = true;
+}
+
 const Ephemeris* BroadcastOrbits::select(const SatId& sat, double t) const {
   const auto it = by_sat_.find(sat);
   if (it == by_sat_.end()) return nullptr;

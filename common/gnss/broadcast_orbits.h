@@ -37,6 +37,10 @@ class BroadcastOrbits {
                                                   char band, const Eigen::Vector3d& rx_e) const;
 
   const NavData& nav() const { return nav_; }
+  /// A navigation message received later (online); one already held (same satellite and toe) is
+  /// ignored (as mergeNav() does). The ionosphere parameters are taken when `nav` has them.
+  void add(const Ephemeris& e);
+  void setIonosphere(const NavData& nav);
 
  private:
   NavData nav_;

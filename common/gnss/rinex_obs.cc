@@ -128,16 +128,31 @@ double epochTime(Reader& r, const std::string& line, bool v3, double time_offset
 
 }  // namespace
 
-ObsData readRinexObs(const std::string& path) {
-  Reader r(path);
-  ObsData data;
-  ObsHeader& h = data.header;
-  std::string line;
-  bool header_done = false;
+struct RinexObsReader::State {
+  explicit State(const std::string& path) : r(path) {}
+  Reader r;
+  ObsHeader h;
+  bool v3 = false;
   char file_sys = 'G';
   std::vector<std::string> v2_types;
   double time_offset = 0.0;  // added to epoch times to get GPS time
-  char pending_sys = 0;      // SYS / # / OBS TYPES continuation state
+  double last_t = -1e300;
+  int skipped = 0;
+};
+
+RinexObsReader::~RinexObsReader() = default;
+const ObsHeader& RinexObsReader::header() const { return s_->h; }
+int RinexObsReader::skippedSpecialRecords() const { return s_->skipped; }
+
+RinexObsReader::RinexObsReader(const std::string& path) : s_(std::make_unique<State>(path)) {
+  Reader& r = s_->r;
+  ObsHeader& h = s_->h;
+  char& file_sys = s_->file_sys;
+  std::vector<std::string>& v2_types = s_->v2_types;
+  double& time_offset = s_->time_offset;
+  std::string line;
+  bool header_done = false;
+  char pending_sys = 0;  // SYS / # / OBS TYPES continuation state
   int pending_count = 0;
   int v2_count = 0;
   while (r.next(line)) {
@@ -191,14 +206,22 @@ ObsData readRinexObs(const std::string& path) {
   }
   if (!header_done) r.fail("END OF HEADER not found");
   if (h.version < 2.0 || h.version >= 5.0) r.fail("unsupported RINEX version");
-  const bool v3 = h.version >= 3.0;
+  const bool v3 = s_->v3 = h.version >= 3.0;
   if (!v3) {
     if (v2_types.empty()) r.fail("no '# / TYPES OF OBSERV' in the header");
     auto& types = h.obs_types[file_sys == 'M' ? 'G' : file_sys];
     for (const auto& t : v2_types) types.push_back(codeFromV2(t));
   }
+}
 
-  double last_t = -1e300;
+bool RinexObsReader::next(ObsEpoch& out) {
+  Reader& r = s_->r;
+  ObsHeader& h = s_->h;
+  const bool v3 = s_->v3;
+  const char file_sys = s_->file_sys;
+  const std::vector<std::string>& v2_types = s_->v2_types;
+  double& last_t = s_->last_t;
+  std::string line;
   while (r.next(line)) {
     if (rinex::trim(line).empty()) continue;
     if (v3 && line[0] != '>') r.fail("expected an epoch record starting with '>'");
@@ -219,11 +242,11 @@ ObsData readRinexObs(const std::string& path) {
       }
       for (int k = 0; k < lines; ++k)
         r.need(line, "special records of epoch flag " + std::to_string(flag));
-      ++data.skipped_special_records;
+      ++s_->skipped;
       continue;
     }
     ObsEpoch ep;
-    ep.t = epochTime(r, line, v3, time_offset);
+    ep.t = epochTime(r, line, v3, s_->time_offset);
     ep.flag = flag;
     if (ep.t <= last_t) {
       r.fail(ep.t == last_t ? "duplicated epoch" : "epoch time goes backwards");
@@ -270,8 +293,19 @@ ObsData readRinexObs(const std::string& path) {
         if (isSupported(so.sat.sys)) ep.sats.push_back(std::move(so));
       }
     }
-    data.epochs.push_back(std::move(ep));
+    out = std::move(ep);
+    return true;
   }
+  return false;
+}
+
+ObsData readRinexObs(const std::string& path) {
+  RinexObsReader reader(path);
+  ObsData data;
+  data.header = reader.header();
+  ObsEpoch e;
+  while (reader.next(e)) data.epochs.push_back(std::move(e));
+  data.skipped_special_records = reader.skippedSpecialRecords();
   return data;
 }
 

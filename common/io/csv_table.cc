@@ -32,64 +32,86 @@ std::string joinHeader(const std::vector<std::string>& header) {
 
 }  // namespace
 
-CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& header,
-                      const std::vector<ColumnRange>& ranges) {
-  std::ifstream in(path);
-  if (!in) throw DataError(path, 0, "cannot open file");
-  CsvTable table;
+struct CsvRowReader::Stream {
+  std::ifstream in;
+};
+
+CsvRowReader::CsvRowReader(const std::string& path, const std::vector<std::string>& header,
+                           const std::vector<ColumnRange>& ranges)
+    : in_(std::make_unique<Stream>()), path_(path), header_(header), ranges_(ranges) {
+  in_->in.open(path);
+  if (!in_->in) throw DataError(path, 0, "cannot open file");
+  std::vector<std::string> fields;
+  if (!nextFields(fields)) throw DataError(path, line_no_, "empty file, header missing");
+  std::vector<std::string> names;
+  for (const auto& f : fields) names.push_back(trim(f));
+  if (names != header) {
+    throw DataError(path, line_no_, "header must be '" + joinHeader(header) + "'");
+  }
+}
+
+CsvRowReader::~CsvRowReader() = default;
+
+bool CsvRowReader::nextFields(std::vector<std::string>& fields) {
   std::string line;
-  long line_no = 0;
-  bool have_header = false;
-  while (std::getline(in, line)) {
-    ++line_no;
+  while (std::getline(in_->in, line)) {
+    ++line_no_;
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
-    const auto fields = splitFields(t);
-    if (!have_header) {
-      std::vector<std::string> names;
-      for (const auto& f : fields) names.push_back(trim(f));
-      if (names != header) {
-        throw DataError(path, line_no, "header must be '" + joinHeader(header) + "'");
-      }
-      have_header = true;
-      continue;
-    }
-    if (fields.size() != header.size()) {
-      throw DataError(path, line_no,
-                      "expected " + std::to_string(header.size()) + " columns, found " +
-                          std::to_string(fields.size()));
-    }
-    std::vector<double> row(fields.size());
-    for (size_t i = 0; i < fields.size(); ++i) {
-      const std::string f = trim(fields[i]);
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(f.c_str(), &end);
-      if (f.empty() || end != f.c_str() + f.size()) {
-        throw DataError(path, line_no, "column '" + header[i] + "' is not a number: '" + f + "'");
-      }
-      if (!std::isfinite(v)) {
-        throw DataError(path, line_no, "column '" + header[i] + "' is not finite: '" + f + "'");
-      }
-      if (i < ranges.size() && (v < ranges[i].min || v > ranges[i].max)) {
-        std::ostringstream msg;
-        msg << "column '" << header[i] << "' value " << v << " outside the physical range ["
-            << ranges[i].min << ", " << ranges[i].max << "]";
-        throw DataError(path, line_no, msg.str());
-      }
-      row[i] = v;
-    }
-    if (!table.rows.empty()) {
-      const double prev = table.rows.back()[0];
-      if (row[0] == prev) throw DataError(path, line_no, "duplicated time " + fields[0]);
-      if (row[0] < prev)
-        throw DataError(path, line_no, "time goes backwards (" + trim(fields[0]) + ")");
-    }
-    table.rows.push_back(std::move(row));
-    table.line_numbers.push_back(line_no);
+    fields = splitFields(t);
+    return true;
   }
-  if (in.bad()) throw DataError(path, line_no, "read error");
-  if (!have_header) throw DataError(path, line_no, "empty file, header missing");
+  if (in_->in.bad()) throw DataError(path_, line_no_, "read error");
+  return false;
+}
+
+bool CsvRowReader::next(std::vector<double>& row) {
+  std::vector<std::string> fields;
+  if (!nextFields(fields)) return false;
+  if (fields.size() != header_.size()) {
+    throw DataError(path_, line_no_,
+                    "expected " + std::to_string(header_.size()) + " columns, found " +
+                        std::to_string(fields.size()));
+  }
+  row.assign(fields.size(), 0.0);
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const std::string f = trim(fields[i]);
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(f.c_str(), &end);
+    if (f.empty() || end != f.c_str() + f.size()) {
+      throw DataError(path_, line_no_, "column '" + header_[i] + "' is not a number: '" + f + "'");
+    }
+    if (!std::isfinite(v)) {
+      throw DataError(path_, line_no_, "column '" + header_[i] + "' is not finite: '" + f + "'");
+    }
+    if (i < ranges_.size() && (v < ranges_[i].min || v > ranges_[i].max)) {
+      std::ostringstream msg;
+      msg << "column '" << header_[i] << "' value " << v << " outside the physical range ["
+          << ranges_[i].min << ", " << ranges_[i].max << "]";
+      throw DataError(path_, line_no_, msg.str());
+    }
+    row[i] = v;
+  }
+  if (have_prev_) {
+    if (row[0] == prev_t_) throw DataError(path_, line_no_, "duplicated time " + trim(fields[0]));
+    if (row[0] < prev_t_)
+      throw DataError(path_, line_no_, "time goes backwards (" + trim(fields[0]) + ")");
+  }
+  have_prev_ = true;
+  prev_t_ = row[0];
+  return true;
+}
+
+CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& header,
+                      const std::vector<ColumnRange>& ranges) {
+  CsvRowReader reader(path, header, ranges);
+  CsvTable table;
+  std::vector<double> row;
+  while (reader.next(row)) {
+    table.rows.push_back(row);
+    table.line_numbers.push_back(reader.line());
+  }
   return table;
 }
 

@@ -2,6 +2,7 @@
 // checked row by row (column count, numbers, NaN/inf, time order, per-column ranges).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,32 @@ struct ColumnRange {
 struct CsvTable {
   std::vector<std::vector<double>> rows;
   std::vector<long> line_numbers;  // line in the file of each row, for later messages
+};
+
+/// Reads a CsvTable row by row (constant memory): the same checks as readCsvTable().
+class CsvRowReader {
+ public:
+  /// Opens `path` and checks its header; throws DataError naming the file, line and problem.
+  CsvRowReader(const std::string& path, const std::vector<std::string>& header,
+               const std::vector<ColumnRange>& ranges);
+  ~CsvRowReader();
+  CsvRowReader(const CsvRowReader&) = delete;
+  CsvRowReader& operator=(const CsvRowReader&) = delete;
+  /// The next row; false at the end of the file. Throws DataError on a bad row.
+  bool next(std::vector<double>& row);
+  long line() const { return line_no_; }  // of the row last returned
+  const std::string& path() const { return path_; }
+
+ private:
+  bool nextFields(std::vector<std::string>& fields);
+  struct Stream;
+  std::unique_ptr<Stream> in_;
+  std::string path_;
+  std::vector<std::string> header_;
+  std::vector<ColumnRange> ranges_;
+  long line_no_ = 0;
+  bool have_prev_ = false;
+  double prev_t_ = 0.0;
 };
 
 /// Reads `path`, whose first line must equal `header` (comma separated names, spaces ignored).

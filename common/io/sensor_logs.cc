@@ -24,16 +24,31 @@ const std::vector<std::string> kTruthHeader{"t",  "lat", "lon", "h",  "ve", "vn"
 
 }  // namespace
 
+ImuLogReader::ImuLogReader(const std::string& path)
+    : rows_(path, kImuHeader, {kTime, kGyro, kGyro, kGyro, kAcc, kAcc, kAcc}) {}
+
+bool ImuLogReader::next(ImuSample& s) {
+  if (!rows_.next(row_)) return false;
+  s.t = row_[0];
+  s.gyro = {row_[1], row_[2], row_[3]};
+  s.acc = {row_[4], row_[5], row_[6]};
+  return true;
+}
+
+OdomLogReader::OdomLogReader(const std::string& path)
+    : rows_(path, kOdomHeader, {kTime, kSpeed, kYawRate}) {}
+
+bool OdomLogReader::next(OdomSample& s) {
+  if (!rows_.next(row_)) return false;
+  s = {row_[0], row_[1], row_[2]};
+  return true;
+}
+
 std::vector<ImuSample> readImuCsv(const std::string& path) {
-  const CsvTable table =
-      readCsvTable(path, kImuHeader, {kTime, kGyro, kGyro, kGyro, kAcc, kAcc, kAcc});
-  std::vector<ImuSample> out(table.rows.size());
-  for (size_t i = 0; i < out.size(); ++i) {
-    const auto& r = table.rows[i];
-    out[i].t = r[0];
-    out[i].gyro = {r[1], r[2], r[3]};
-    out[i].acc = {r[4], r[5], r[6]};
-  }
+  ImuLogReader reader(path);
+  std::vector<ImuSample> out;
+  ImuSample s;
+  while (reader.next(s)) out.push_back(s);
   return out;
 }
 
@@ -47,11 +62,10 @@ void writeImuCsv(const std::string& path, const std::vector<ImuSample>& samples)
 }
 
 std::vector<OdomSample> readOdomCsv(const std::string& path) {
-  const CsvTable table = readCsvTable(path, kOdomHeader, {kTime, kSpeed, kYawRate});
-  std::vector<OdomSample> out(table.rows.size());
-  for (size_t i = 0; i < out.size(); ++i) {
-    out[i] = {table.rows[i][0], table.rows[i][1], table.rows[i][2]};
-  }
+  OdomLogReader reader(path);
+  std::vector<OdomSample> out;
+  OdomSample s;
+  while (reader.next(s)) out.push_back(s);
   return out;
 }
 
@@ -94,13 +108,17 @@ std::vector<TruthSample> readTruthCsv(const std::string& path) {
   return out;
 }
 
+const std::vector<std::string>& truthCsvHeader() { return kTruthHeader; }
+
+std::vector<double> truthCsvRow(const TruthSample& s) {
+  return {s.t,         s.lat_deg,   s.lon_deg,   s.h,         s.v_enu.x(), s.v_enu.y(),
+          s.v_enu.z(), s.q_n_b.w(), s.q_n_b.x(), s.q_n_b.y(), s.q_n_b.z()};
+}
+
 void writeTruthCsv(const std::string& path, const std::vector<TruthSample>& samples) {
   std::vector<std::vector<double>> rows;
   rows.reserve(samples.size());
-  for (const auto& s : samples) {
-    rows.push_back({s.t, s.lat_deg, s.lon_deg, s.h, s.v_enu.x(), s.v_enu.y(), s.v_enu.z(),
-                    s.q_n_b.w(), s.q_n_b.x(), s.q_n_b.y(), s.q_n_b.z()});
-  }
+  for (const auto& s : samples) rows.push_back(truthCsvRow(s));
   writeCsvTable(path, kTruthHeader, rows);
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/imu/imu_sample.h"
+#include "common/io/csv_table.h"
 #include "common/odometer/odom_sample.h"
 
 namespace giocal {
@@ -22,6 +23,27 @@ struct TruthSample {
   Eigen::Quaterniond q_n_b = Eigen::Quaterniond::Identity();
 };
 
+/// imu.csv and odom.csv read sample by sample (constant memory), with readCsvTable()'s checks.
+class ImuLogReader {
+ public:
+  explicit ImuLogReader(const std::string& path);
+  bool next(ImuSample& s);  // false at the end; throws DataError on a bad row
+
+ private:
+  CsvRowReader rows_;
+  std::vector<double> row_;
+};
+
+class OdomLogReader {
+ public:
+  explicit OdomLogReader(const std::string& path);
+  bool next(OdomSample& s);
+
+ private:
+  CsvRowReader rows_;
+  std::vector<double> row_;
+};
+
 std::vector<ImuSample> readImuCsv(const std::string& path);
 void writeImuCsv(const std::string& path, const std::vector<ImuSample>& samples);
 
@@ -31,5 +53,8 @@ void writeOdomCsv(const std::string& path, const std::vector<OdomSample>& sample
 /// Quaternions must have unit norm within 1e-3 and are normalized on reading.
 std::vector<TruthSample> readTruthCsv(const std::string& path);
 void writeTruthCsv(const std::string& path, const std::vector<TruthSample>& samples);
+/// The truth.csv header and one row of it (for writers that stream rows).
+const std::vector<std::string>& truthCsvHeader();
+std::vector<double> truthCsvRow(const TruthSample& s);
 
 }  // namespace giocal

@@ -6,8 +6,9 @@
 #include <sstream>
 
 #include "common/calibration/calibration_inputs.h"
+#include "common/calibration/run_writer.h"
 #include "common/math/rotation.h"
-#include "ekf/ekf_calibrator.h"
+#include "replay/replay.h"
 #include "sim/simulator.h"
 #include "temp_dir.h"
 
@@ -23,12 +24,16 @@ CalibrationInputs simulatedInputs(std::uint64_t seed) {
   return loadCalibrationInputs(dir.path() + "/data");
 }
 
+CalibrationRun runEkf(const CalibrationInputs& in, const CalibrationOptions& options) {
+  return replayInputs(in, {"ekf", options, {}}, nullptr);
+}
+
 /// Bounds that the 20-seed Monte Carlo (bench/monte_carlo.cc, seeds 1-20) stays inside with
 /// margin: the worst seed there had 0.051 m, 0.37 deg roll, 0.26 deg pitch, 9.4 deg yaw, 5.4e-3
 /// in the scales.
 void expectCalibrated(const CalibrationRun& run, const CalibrationInputs& in, double scale = 1.0) {
-  ASSERT_FALSE(run.history.empty());
-  const CalibrationError e = calibrationError(run.history.back(), in.truth->calib);
+  ASSERT_TRUE(run.latest);
+  const CalibrationError e = calibrationError(run.final(), in.truth->calib);
   EXPECT_LT(std::abs(e.p_b_m.x()), 0.1 * scale);
   EXPECT_LT(std::abs(e.p_b_m.y()), 0.1 * scale);
   EXPECT_LT(std::abs(e.rpy.x()), 0.8 * scale * kDegToRad);
@@ -36,27 +41,27 @@ void expectCalibrated(const CalibrationRun& run, const CalibrationInputs& in, do
   EXPECT_LT(std::abs(e.rpy.z()), 15.0 * scale * kDegToRad);
   EXPECT_LT(std::abs(e.s_v), 0.01 * scale);
   EXPECT_LT(std::abs(e.s_w), 0.01 * scale);
-  EXPECT_TRUE(run.history.back().cov.allFinite());
+  EXPECT_TRUE(run.final().cov.allFinite());
 }
 
 TEST(EkfCalibrator, CalibratesThePaperSimulationOnTwoSeeds) {
   for (std::uint64_t seed : {101u, 202u}) {
     SCOPED_TRACE(seed);
     const CalibrationInputs in = simulatedInputs(seed);
-    const CalibrationRun run = runEkfCalibration(in, CalibrationOptions{});
+    const CalibrationRun run = runEkf(in, CalibrationOptions{});
     expectCalibrated(run, in);
     // Far better than the initial guess on what the trajectory observes.
     const CalibrationEstimate start{0.0, in.description.initial_calibration.mean, {}};
     const CalibrationError e0 = calibrationError(start, in.truth->calib);
-    const CalibrationError e = calibrationError(run.history.back(), in.truth->calib);
+    const CalibrationError e = calibrationError(run.final(), in.truth->calib);
     EXPECT_LT(std::abs(e.s_w), 0.5 * std::abs(e0.s_w) + 1e-3);
     EXPECT_LT(std::abs(e.rpy.x()), 0.5 * std::abs(e0.rpy.x()) + 0.2 * kDegToRad);
     EXPECT_GT(run.fixRate(), 0.9);
     EXPECT_GT(run.gnss_epochs, 100);
     // p_b_m.z is held at the prior: value and sigma unchanged.
     const CalibrationPrior& prior = in.description.initial_calibration;
-    EXPECT_NEAR(run.history.back().calib.p_b_m.z(), prior.mean.p_b_m.z(), 1e-12);
-    EXPECT_NEAR(std::sqrt(run.history.back().cov(calib_index::kP + 2, calib_index::kP + 2)),
+    EXPECT_NEAR(run.final().calib.p_b_m.z(), prior.mean.p_b_m.z(), 1e-12);
+    EXPECT_NEAR(std::sqrt(run.final().cov(calib_index::kP + 2, calib_index::kP + 2)),
                 prior.sd_p_b_m.z(), 1e-12);
     // No bad-data warning; the one finding is that this drive holds little on the extrinsic yaw
     // (its sigma ends near half the prior's).
@@ -71,7 +76,7 @@ TEST(EkfCalibrator, BridgesAnImuGapAndSaysSo) {
   in.imu.erase(std::remove_if(in.imu.begin(), in.imu.end(),
                               [&](const ImuSample& s) { return s.t > t0 && s.t < t0 + 0.8; }),
                in.imu.end());
-  const CalibrationRun run = runEkfCalibration(in, CalibrationOptions{});
+  const CalibrationRun run = runEkf(in, CalibrationOptions{});
   ASSERT_FALSE(run.warnings.empty());
   EXPECT_NE(run.warnings.front().find("IMU gap"), std::string::npos) << run.warnings.front();
   expectCalibrated(run, in, 2.0);
@@ -91,7 +96,7 @@ TEST(EkfCalibrator, SurvivesAGnssOutageAndAVanishingSatellite) {
                                 [&](const SatObs& s) { return s.sat == gone; }),
                  e.sats.end());
   }
-  const CalibrationRun run = runEkfCalibration(in, CalibrationOptions{});
+  const CalibrationRun run = runEkf(in, CalibrationOptions{});
   EXPECT_LT(run.gnss_epochs, 135);
   expectCalibrated(run, in, 2.0);
 }
@@ -111,7 +116,7 @@ TEST(EkfCalibrator, ReopensTheCalibrationWhenTheOdometerIsGatedOutAgainAndAgain)
       prior.mean.q_b_m * Eigen::Quaterniond(Eigen::AngleAxisd(5.27 * kDegToRad, Vec3::UnitX()));
   CalibrationOptions options;
   options.odometer_iterations = 1;
-  const CalibrationRun run = runEkfCalibration(in, options);
+  const CalibrationRun run = runEkf(in, options);
   EXPECT_GT(run.counters.at("calibration_reopened"), 0);
   ASSERT_FALSE(run.warnings.empty());
   EXPECT_NE(run.warnings.front().find("q_b_m was increased by the prior's"), std::string::npos)
@@ -129,7 +134,7 @@ TEST(EkfCalibrator, ARobotThatNeverDrivesIsAClearError) {
                                [&](const OdomSample& s) { return s.t > t_end; }),
                 in.odom.end());
   try {
-    runEkfCalibration(in, CalibrationOptions{});
+    runEkf(in, CalibrationOptions{});
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("could not initialize"), std::string::npos) << e.what();
@@ -145,11 +150,15 @@ TEST(CalibrationRun, WritesTheBriefsFilesAndKeys) {
   e.calib.s_v = 0.01;
   e.calib.q_b_m = Eigen::Quaterniond(rotationFromRpy(Vec3(1, -2, 3) * kDegToRad));
   e.cov = Eigen::Matrix<double, 8, 8>::Identity() * 1e-4;
-  run.history = {e};
+  run.latest = e;
   run.gnss_epochs = 4;
   run.fixed_epochs = 3;
   test::TempDir dir;
-  writeCalibrationRun(dir.path(), run);
+  {
+    RunWriter writer(dir.path());
+    writer.estimate(e);
+    writer.commit(run, nullptr);
+  }
   std::ifstream csv(dir.file("calibration.csv"));
   std::string header;
   std::getline(csv, header);

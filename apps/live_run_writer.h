@@ -1,0 +1,29 @@
+// LiveRunWriter: a run's output files (common/calibration/run_writer.h) plus its live events
+// printed as they happen ("  ekf t=+84.0 s: s_v converged: ...").
+#pragma once
+
+#include <iomanip>
+#include <ostream>
+#include <string>
+
+#include "common/calibration/run_writer.h"
+
+namespace giocal {
+
+class LiveRunWriter : public RunWriter {
+ public:
+  LiveRunWriter(const std::string& folder, std::string label, std::ostream& log)
+      : RunWriter(folder), label_(std::move(label)), log_(log) {}
+  void event(double t, const std::string& text) override {
+    const auto flags = log_.flags();
+    log_ << "  " << label_ << " t=+" << std::fixed << std::setprecision(1) << t << " s: " << text
+         << "\n";
+    log_.flags(flags);
+  }
+
+ private:
+  std::string label_;
+  std::ostream& log_;
+};
+
+}  // namespace giocal

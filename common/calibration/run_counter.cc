@@ -1,0 +1,43 @@
+#include "common/calibration/run_counter.h"
+
+namespace giocal {
+
+const char* counterName(Counter c) {
+  switch (c) {
+    case Counter::kOdometerIntervals:
+      return "odometer_intervals";
+    case Counter::kOdometerRejected:
+      return "odometer_rejected";
+    case Counter::kCalibrationReopened:
+      return "calibration_reopened";
+    case Counter::kDdRows:
+      return "dd_rows";
+    case Counter::kGnssRowsRejected:
+      return "gnss_rows_rejected";
+    case Counter::kCodeOutliers:
+      return "code_outliers";
+    case Counter::kAmbiguityResets:
+      return "ambiguity_resets";
+    case Counter::kFixesRejected:
+      return "fixes_rejected";
+    case Counter::kGnssWithoutBase:
+      return "gnss_without_base";
+    case Counter::kReinitializations:
+      return "reinitializations";
+    case Counter::kImuGaps:
+      return "imu_gaps";
+    case Counter::kLateSamples:
+      return "late_samples_dropped";
+    case Counter::kDuplicateSamples:
+      return "duplicate_samples_dropped";
+    case Counter::kNonFiniteSamples:
+      return "non_finite_samples_dropped";
+    case Counter::kDroppedWithoutImu:
+      return "dropped_while_imu_silent";
+    case Counter::kSize:
+      break;
+  }
+  return "unknown";
+}
+
+}  // namespace giocal

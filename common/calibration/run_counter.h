@@ -1,0 +1,28 @@
+// Counter: the named tallies every calibration run keeps (the keys of summary.json's "counters").
+#pragma once
+
+namespace giocal {
+
+enum class Counter {
+  kOdometerIntervals,    // odometer intervals that updated the filter
+  kOdometerRejected,     // of those, gated out
+  kCalibrationReopened,  // extrinsic covariance re-opened after rejections in a row
+  kDdRows,               // DD code and phase rows used
+  kGnssRowsRejected,     // DD rows rejected by a gate or after a solve
+  kCodeOutliers,         // pseudo-ranges flagged by the Doppler-predicted change
+  kAmbiguityResets,      // ambiguities restarted (slip or rejected phase row)
+  kFixesRejected,        // LAMBDA fixes that failed validation
+  kGnssWithoutBase,      // rover epochs with no base epoch near enough
+  kReinitializations,    // restarts after divergence
+  kImuGaps,              // IMU intervals longer than max_imu_gap_s
+  kLateSamples,          // data older than the reorder buffer's lag: dropped
+  kDuplicateSamples,     // a sample with the time of the previous one of its sensor: dropped
+  kNonFiniteSamples,     // NaN or infinite values: dropped
+  kDroppedWithoutImu,    // odometer and GNSS data dropped while the IMU was silent
+  kSize
+};
+
+/// The counter's key in summary.json ("odometer_intervals", ...).
+const char* counterName(Counter c);
+
+}  // namespace giocal

@@ -1,0 +1,124 @@
+// Calibrator: the online calibrator a robot feeds as data arrive (IMU, odometer, rover and base
+// GNSS epochs, ephemerides, in any interleaving) and reads at any time (calibration with its
+// covariance, navigation state, health). It puts the sensors back in time order, initializes,
+// and hands events to one EstimatorCore (EKF or factor graph); memory stays bounded.
+#pragma once
+
+#include <chrono>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "common/calibration/calibration_inputs.h"
+#include "common/calibration/calibration_options.h"
+#include "common/calibration/calibration_run.h"
+#include "common/calibration/initial_state.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/online/convergence.h"
+#include "common/online/estimator_core.h"
+#include "common/online/latency_histogram.h"
+#include "common/online/reorder_buffer.h"
+#include "common/online/run_sink.h"
+
+namespace giocal {
+
+/// Makes the estimator once an initial state is found (again after a divergence). `sensors`
+/// holds the buffered IMU and odometer samples and the dataset description with the prior in
+/// effect; it and `orbits` outlive the core.
+using CoreFactory = std::function<std::unique_ptr<EstimatorCore>(
+    const CalibrationInputs& sensors, const BroadcastOrbits& orbits, const InitialState& init)>;
+
+enum class CalibratorState { kInitializing, kCalibrating, kConverged, kDiverged };
+const char* stateName(CalibratorState s);
+
+struct CalibratorHealth {
+  CalibratorState state = CalibratorState::kInitializing;
+  double t_data = 0.0;                 // newest datum received [s]
+  std::vector<std::string> converged;  // parameters that have converged
+  std::vector<std::string> weak;       // parameters the data have barely informed so far
+  std::map<std::string, long> counters;
+  size_t buffered_samples = 0;  // IMU + odometer samples held
+  size_t pending_epochs = 0;    // rover epochs waiting
+};
+
+class Calibrator {
+ public:
+  /// `dataset`: sensor noise, lever arm, the calibration prior; `base_e`: base position (ECEF).
+  /// `sink` (may be null) receives estimates, trajectory samples and live events.
+  Calibrator(std::string estimator, const DatasetDescription& dataset,
+             const Eigen::Vector3d& base_e, const CalibrationOptions& options, CoreFactory factory,
+             RunSink* sink);
+
+  void addImu(const ImuSample& s);
+  void addOdometer(const OdomSample& s);
+  void addRover(const ObsEpoch& e);
+  void addBase(const ObsEpoch& e);
+  void addEphemeris(const Ephemeris& e);
+  /// A navigation file's worth: its ephemerides and ionosphere parameters.
+  void addNavigation(const NavData& nav);
+  /// No more data: drains the buffers, finishes the run (weak directions, timing). Throws
+  /// std::runtime_error if no initial state was ever found (the message says why).
+  void finish();
+
+  std::optional<CalibrationEstimate> calibration() const { return run_.latest; }
+  std::optional<NavState> navState() const;
+  CalibratorHealth health() const;
+  const CalibrationRun& run() const { return run_; }
+
+ private:
+  enum class Kind { kImu, kOdometer, kRover, kBase };
+  struct Datum {
+    Kind kind;
+    ImuSample imu;
+    OdomSample odom;
+    ObsEpoch obs;
+  };
+  void push(double t, Datum d);
+  void release(Datum& d);
+  void process();
+  bool tryInitialize();
+  bool ready(double t) const;
+  void dispatchOdometer(const OdomSample& s);
+  void dispatchRover(const ObsEpoch& rover);
+  void onEstimate(const CalibrationEstimate& e);
+  void trim();
+  void say(double t, const std::string& text);
+  void dropped(Counter c, double t, const std::string& what);
+  const ObsEpoch* nearestBase(double t) const;
+  double rel(double t) const { return t - t_first_; }
+
+  CalibrationOptions options_;
+  DatasetDescription original_;  // as given: the prior the weak-direction check compares with
+  DatasetDescription dataset_;   // with the prior in effect (re-initialization replaces it)
+  CoreFactory factory_;
+  RunSink* sink_;
+  CalibrationRun run_;
+  ReorderBuffer<Datum> reorder_;
+  CalibrationInputs buf_;  // buffered samples and ephemerides (bounded)
+  std::unique_ptr<BroadcastOrbits> orbits_;
+  std::deque<ObsEpoch> rover_;  // rover epochs not yet processed
+  std::unique_ptr<EstimatorCore> core_;
+  ConvergenceMonitor convergence_;
+  bool diverged_ = false, finishing_ = false, done_said_ = false;
+  double t_first_ = NAN, frontier_ = -INFINITY;
+  double t_from_ = -INFINITY;          // initialization searches from here
+  double last_init_try_ = -INFINITY;   // newest rover epoch time the last attempt could use
+  double last_odo_event_ = -INFINITY;  // newest odometer sample handed to the core
+  double imu_silent_since_ = NAN;      // warned once per silence
+  double next_progress_ = NAN;
+  std::string why_not_initialized_;
+  InitialRtkCache init_cache_;           // RTK solutions between initialization attempts
+  double skip_rover_until_ = -INFINITY;  // the epoch that diverged is not processed again
+  double t_imu_first_ = NAN, t_imu_last_ = NAN, t_rover_first_ = NAN, t_rover_last_ = NAN;
+  double last_rover_t_ = -INFINITY;
+  LatencyHistogram latency_;
+  double init_time_s_ = 0.0, busy_s_ = 0.0;
+  std::set<Counter> warned_;  // bad-data kinds already named in a warning
+  long released_ = 0;
+};
+
+}  // namespace giocal

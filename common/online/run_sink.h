@@ -1,0 +1,34 @@
+// RunSink: where an online calibrator hands what it produces as it goes: each calibration
+// estimate, each trajectory sample, and live events (convergence, warnings) in words.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/calibration/calibration_run.h"
+#include "common/io/sensor_logs.h"
+
+namespace giocal {
+
+class RunSink {
+ public:
+  virtual ~RunSink() = default;
+  virtual void estimate(const CalibrationEstimate&) {}
+  virtual void trajectory(const TruthSample&) {}
+  /// A live event: data time [s] and one line of text.
+  virtual void event(double /*t*/, const std::string& /*text*/) {}
+};
+
+/// Keeps everything in memory: for tests and the Monte Carlo, not for long drives.
+class RunRecording : public RunSink {
+ public:
+  void estimate(const CalibrationEstimate& e) override { history.push_back(e); }
+  void trajectory(const TruthSample& s) override { trajectory_samples.push_back(s); }
+  void event(double t, const std::string& text) override { events.push_back({t, text}); }
+
+  std::vector<CalibrationEstimate> history;
+  std::vector<TruthSample> trajectory_samples;
+  std::vector<std::pair<double, std::string>> events;
+};
+
+}  // namespace giocal

@@ -1,0 +1,75 @@
+#include "ekf/ekf_core.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace giocal {
+namespace {
+
+bool finiteState(const StateRegistry& s) {
+  if (!s.covariance().allFinite()) return false;
+  for (const std::string& n : s.names()) {
+    if (!s.value(n).allFinite()) return false;
+  }
+  return true;
+}
+
+std::string at(double t) {
+  std::ostringstream s;
+  s.precision(10);
+  s << t;
+  return s.str();
+}
+
+}  // namespace
+
+EkfCore::EkfCore(const CalibrationOptions& options, const CalibrationInputs& sensors,
+                 const BroadcastOrbits& orbits, const InitialState& init)
+    : options_(options),
+      filter_(options, sensors.description, sensors.imu, init),
+      gnss_(orbits, sensors.base_e, options),
+      next_output_(init.x.t) {}
+
+void EkfCore::odometer(const OdomSample& sample, CalibrationRun& run) {
+  const OdometerStep step = filter_.updateOdometer(sample);
+  run.count(Counter::kOdometerIntervals, step.interval);
+  run.count(Counter::kOdometerRejected, step.rejected);
+  if (!step.reopened) return;
+  run.count(Counter::kCalibrationReopened);
+  if (run.counter(Counter::kCalibrationReopened) > 1) return;
+  run.warn(std::to_string(options_.max_odometer_rejections) +
+           " odometer intervals in a row rejected by the innovation gate before t=" + at(sample.t) +
+           ": the filter was more certain of its calibration than the odometer allows (a poor "
+           "initial guess, wheel slip, wrong scale or time offset); the covariance of p_b_m and "
+           "q_b_m was increased by the prior's (counter calibration_reopened)");
+}
+
+EpochOutcome EkfCore::gnss(const ObsEpoch& rover, const ObsEpoch& base, CalibrationRun& run) {
+  const GnssEpochReport rep = gnss_.process(filter_, rover, base);
+  run.count(Counter::kDdRows, rep.dd_rows);
+  run.count(Counter::kGnssRowsRejected, rep.rejected_rows);
+  run.count(Counter::kCodeOutliers, rep.code_outliers);
+  run.count(Counter::kAmbiguityResets, rep.ambiguity_resets);
+  EpochOutcome out;
+  out.diverged = rep.diverged || !finiteState(filter_.state());
+  if (out.diverged) return out;
+  out.used = rep.used;
+  out.fixed = rep.fixed;
+  out.recorded = true;
+  out.estimate = filter_.calibration();
+  return out;
+}
+
+void EkfCore::trajectoryUpTo(double t, const std::function<void(const TruthSample&)>& out) {
+  while (next_output_ <= t) {
+    out(filter_.trajectorySample(std::max(next_output_, filter_.time())));
+    next_output_ += 1.0 / options_.output_rate_hz;
+  }
+}
+
+double EkfCore::oldestSampleNeeded() const {
+  // The IMU is integrated from the state's time; the motion detectors look half a window back.
+  return filter_.time() - options_.models.motion.window_s;
+}
+
+}  // namespace giocal

@@ -1,0 +1,315 @@
+#include "fgo/factor_graph_core.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/imu/gyro_mean.h"
+#include "common/imu/imu_preintegration.h"
+#include "common/math/rotation.h"
+#include "common/models/heading_change_model.h"
+#include "common/models/imu_preintegration_model.h"
+#include "common/models/nhc_model.h"
+#include "common/models/odometer_preintegration_model.h"
+#include "common/models/planar_motion_projection.h"
+#include "common/models/prior_model.h"
+#include "common/models/random_walk_model.h"
+#include "common/models/standstill_projection.h"
+#include "common/models/zupt_model.h"
+#include "common/odometer/odometer_preintegration.h"
+#include "fgo/variable_names.h"
+
+namespace giocal {
+
+using fgo_var::kPbg;
+using fgo_var::kPbm;
+using fgo_var::kQbm;
+using fgo_var::tagged;
+
+FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const BroadcastOrbits& orbits,
+                                 const CalibrationOptions& o, const FgoOptions& fo,
+                                 const InitialState& init)
+    : in_(sensors),
+      o_(o),
+      fo_(fo),
+      frame_(init.origin_e),
+      orbits_(orbits),
+      builder_(orbits_, sensors.base_e, o.dd),
+      rover_check_(o.code_outliers),
+      base_check_(o.code_outliers),
+      motion_([&] {
+        MotionDetectorOptions m = o.models.motion;
+        m.gyro_noise_density = sensors.description.imu_noise.gyro_noise_density;
+        return m;
+      }()) {
+  start(init);
+}
+
+std::shared_ptr<const MeasurementModel> FactorGraphCore::planar(
+    std::shared_ptr<const MeasurementModel> m) const {
+  if (!o_.hold_p_b_m_z) return m;
+  return std::make_shared<PlanarMotionProjection>(std::move(m));
+}
+
+FgoEpoch FactorGraphCore::newEpoch(double t) {
+  FgoEpoch e;
+  e.t = t;
+  e.k = next_k_++;
+  e.p = tagged("p_n_b", e.k);
+  e.q = tagged("q_n_b", e.k);
+  e.v = tagged("v_n_b", e.k);
+  e.ba = tagged("b_a", e.k);
+  e.bg = tagged("b_g", e.k);
+  e.sv = tagged("s_v", e.k);
+  e.sw = tagged("s_w", e.k);
+  e.cd = tagged("cdt_dot", e.k);
+  return e;
+}
+
+void FactorGraphCore::addNavVariables(const FgoEpoch& e, const NavState& x, double s_v, double s_w,
+                                      double cd) {
+  Eigen::VectorXd q(4);
+  quatToWxyz(x.q_n_b, q.data());
+  w_.addVariable(vectorBlock(e.p), x.p_n_b);
+  w_.addVariable(rotationBlock(e.q), q);
+  w_.addVariable(vectorBlock(e.v), x.v_n_b);
+  w_.addVariable(vectorBlock(e.ba), x.b_a);
+  w_.addVariable(vectorBlock(e.bg), x.b_g);
+  w_.addVariable(vectorBlock(e.sv, 1), Eigen::VectorXd::Constant(1, s_v));
+  w_.addVariable(vectorBlock(e.sw, 1), Eigen::VectorXd::Constant(1, s_w));
+  w_.addVariable(vectorBlock(e.cd, 1), Eigen::VectorXd::Constant(1, cd));
+}
+
+NavState FactorGraphCore::nav(const FgoEpoch& e) const {
+  NavState x;
+  x.t = e.t;
+  x.p_n_b = w_.value(e.p);
+  x.q_n_b = quatFromWxyz(w_.value(e.q).data());
+  x.v_n_b = w_.value(e.v);
+  x.b_a = w_.value(e.ba);
+  x.b_g = w_.value(e.bg);
+  return x;
+}
+
+void FactorGraphCore::feedMotion(double t, const Eigen::Vector3d& b_g) {
+  const auto after = [&](const auto& v) {
+    return std::upper_bound(v.begin(), v.end(), motion_fed_t_,
+                            [](double x, const auto& s) { return x < s.t; });
+  };
+  for (auto it = after(in_.imu); it != in_.imu.end() && it->t <= t; ++it) {
+    motion_.addImu(it->t, it->gyro - b_g);
+  }
+  for (auto it = after(in_.odom); it != in_.odom.end() && it->t <= t; ++it) {
+    motion_.addOdometer(it->t, it->v);
+  }
+  motion_fed_t_ = t;
+}
+
+void FactorGraphCore::start(const InitialState& init) {
+  FgoEpoch e = newEpoch(init.x.t);
+  const CalibrationPrior& prior = in_.description.initial_calibration;
+  addNavVariables(e, init.x, prior.mean.s_v, prior.mean.s_w, 0.0);
+  Eigen::VectorXd q_bm(4);
+  quatToWxyz(prior.mean.q_b_m, q_bm.data());
+  w_.addVariable(vectorBlock(kPbm), prior.mean.p_b_m);
+  w_.addVariable(rotationBlock(kQbm), q_bm);
+  w_.addVariable(vectorBlock(kPbg), in_.description.p_b_g);
+  if (o_.hold_p_b_m_z) w_.holdComponents(kPbm, {2});
+  // The initial state and the calibration prior, with their cross-covariance (heading).
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(23, 23);
+  P.topLeftCorner(15, 15) = init.P_nav;
+  P.block(15, 15, 8, 8) = priorCalibrationCovariance(prior);
+  P.block(0, 15, 15, 8) = init.P_nav_calib;
+  P.block(15, 0, 8, 15) = init.P_nav_calib.transpose();
+  std::vector<StateBlock> blocks{vectorBlock(e.p),     rotationBlock(e.q), vectorBlock(e.v),
+                                 vectorBlock(e.ba),    vectorBlock(e.bg),  vectorBlock(e.sv, 1),
+                                 vectorBlock(e.sw, 1), vectorBlock(kPbm),  rotationBlock(kQbm)};
+  Eigen::VectorXd mean(0);
+  std::vector<std::string> names;
+  for (const StateBlock& b : blocks) {
+    const Eigen::VectorXd& x = w_.value(b.name);
+    mean.conservativeResize(mean.size() + x.size());
+    mean.tail(x.size()) = x;
+    names.push_back(b.name);
+  }
+  w_.addFactor({std::make_shared<PriorModel>(blocks, mean, P), names, 0.0, "initial_prior"});
+  w_.addFactor(
+      {std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.cd, 1)},
+                                    Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Constant(1, 1, 1e6)),
+       {e.cd},
+       0.0,
+       "clock_drift_prior"});
+  if (o_.estimate_p_b_g) {
+    w_.addFactor({std::make_shared<PriorModel>(
+                      std::vector<StateBlock>{vectorBlock(kPbg)}, in_.description.p_b_g,
+                      Eigen::Matrix3d::Identity() * o_.p_b_g_sigma * o_.p_b_g_sigma),
+                  {kPbg},
+                  0.0,
+                  "lever_prior"});
+  } else {
+    w_.setConstant(kPbg, true);
+  }
+  feedMotion(e.t, init.x.b_g);
+  e.still = motion_.isStatic();
+  next_output_ = e.t;
+  epochs_.push_back(e);
+}
+
+CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
+  CalibrationEstimate est;
+  est.t = e.t;
+  est.calib.s_v = w_.value(e.sv)[0];
+  est.calib.s_w = w_.value(e.sw)[0];
+  est.calib.p_b_m = w_.value(kPbm);
+  est.calib.q_b_m = quatFromWxyz(w_.value(kQbm).data());
+  est.cov = w_.covariance({e.sv, e.sw, kPbm, kQbm});
+  if (o_.hold_p_b_m_z) {
+    // Held at the prior: its sigma is the prior's, and nothing correlates with it.
+    const int z = calib_index::kP + 2;
+    est.cov.row(z).setZero();
+    est.cov.col(z).setZero();
+    est.cov(z, z) = std::pow(in_.description.initial_calibration.sd_p_b_m.z(), 2);
+  }
+  return est;
+}
+
+void FactorGraphCore::outputTrajectory(const FgoEpoch& from, const FgoEpoch& to) {
+  const NavState x0 = nav(from);
+  while (next_output_ <= to.t + 1e-9) {
+    NavState x = x0;
+    if (next_output_ > from.t) {
+      ImuPreintegration pre(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b),
+                            frame_.omega_ie_n(), x0.b_a, x0.b_g);
+      pre.integrateSamples(in_.imu, from.t, next_output_);
+      x = pre.predict(x0);
+    }
+    trajectory_.push_back(truthRow(frame_, x, std::max(next_output_, from.t)));
+    next_output_ += 1.0 / o_.output_rate_hz;
+  }
+}
+
+void FactorGraphCore::marginalizeOldest() {
+  const FgoEpoch old = epochs_.front();
+  epochs_.pop_front();
+  const std::vector<std::string> mine = old.all();
+  const std::set<std::string> mine_set(mine.begin(), mine.end());
+  // Ambiguities seen only by the oldest epoch's factors leave with it.
+  std::set<std::string> epoch_vars;
+  for (const FgoEpoch& e : epochs_) {
+    for (const std::string& v : e.all()) epoch_vars.insert(v);
+  }
+  std::map<std::string, bool> still_used;
+  for (const Factor& f : w_.factors()) {
+    const bool touches_old = std::any_of(f.vars.begin(), f.vars.end(),
+                                         [&](const std::string& v) { return mine_set.count(v); });
+    const bool touches_epoch = std::any_of(
+        f.vars.begin(), f.vars.end(), [&](const std::string& v) { return epoch_vars.count(v); });
+    for (const std::string& v : f.vars) {
+      if (v.rfind("N:", 0) != 0) continue;
+      still_used[v] = still_used[v] || (touches_epoch && !touches_old);
+    }
+  }
+  std::vector<std::string> drop = mine;
+  for (const auto& [v, used] : still_used) {
+    if (!used) drop.push_back(v);
+  }
+  for (auto it = held_fixes_.begin(); it != held_fixes_.end();) {
+    const bool gone = std::find(drop.begin(), drop.end(), it->first) != drop.end() ||
+                      std::find(drop.begin(), drop.end(), it->second) != drop.end();
+    it = gone ? held_fixes_.erase(it) : std::next(it);
+  }
+  w_.marginalize(drop);
+}
+
+EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
+                                   CalibrationRun& run) {
+  run_ = &run;
+  const FgoEpoch prev = epochs_.back();
+  FgoEpoch e = newEpoch(rover.t);
+  const double dt = e.t - prev.t;
+  const NavState x_prev = nav(prev);
+  auto imu =
+      std::make_shared<ImuPreintegration>(in_.description.imu_noise, frame_.gravity_n(x_prev.p_n_b),
+                                          frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g);
+  imu->integrateSamples(in_.imu, prev.t, e.t);
+  addNavVariables(e, imu->predict(x_prev), w_.value(prev.sv)[0], w_.value(prev.sw)[0],
+                  w_.value(prev.cd)[0]);
+  w_.addFactor({std::make_shared<ImuPreintegrationModel>(imu),
+                {prev.p, prev.q, prev.v, prev.ba, prev.bg, e.p, e.q, e.v, e.ba, e.bg},
+                0.0,
+                tagged("imu", e.k)});
+  OdometerPreintegrationNoise on;
+  on.speed_sigma = in_.description.odom_noise.speed_sigma;
+  on.yaw_rate_sigma = in_.description.odom_noise.yaw_rate_sigma;
+  on.lateral_speed_density = o_.models.lateral_speed_density;
+  on.tilt_rate_density = o_.models.tilt_rate_density;
+  auto odo =
+      std::make_shared<OdometerPreintegration>(on, w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
+  // Motion constraints and whether the robot stood still over the interval.
+  feedMotion(e.t, x_prev.b_g);
+  e.still = motion_.isStatic();
+  if (in_.odom.front().t <= prev.t) {
+    odo->integrateSamples(in_.odom, prev.t, e.t);
+    std::shared_ptr<const MeasurementModel> model =
+        planar(std::make_shared<OdometerPreintegrationModel>(odo));
+    if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
+    w_.addFactor({model,
+                  {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm},
+                  0.0,
+                  tagged("odometer", e.k)});
+  }
+  // Scales and clock drift as random walks (a floor keeps a zero density well posed).
+  const double q_s = std::max(in_.description.odom_noise.scale_random_walk, 1e-5) * std::sqrt(dt);
+  w_.addFactor({std::make_shared<RandomWalkModel>("s_v", 1, q_s), {prev.sv, e.sv}, 0.0, "rw"});
+  w_.addFactor({std::make_shared<RandomWalkModel>("s_w", 1, q_s), {prev.sw, e.sw}, 0.0, "rw"});
+  w_.addFactor({std::make_shared<RandomWalkModel>(
+                    "cdt_dot", 1, std::max(o_.clock_drift_noise, 1e-6) * std::sqrt(dt)),
+                {prev.cd, e.cd},
+                0.0,
+                "rw"});
+  if (e.still) {
+    w_.addFactor({std::make_shared<ZuptModel>(o_.models.zupt_sigma), {e.v}, 0.0, "zupt"});
+    if (prev.still) {
+      w_.addFactor({std::make_shared<HeadingChangeModel>(o_.heading_sigma_deg * kDegToRad),
+                    {prev.q, e.q},
+                    0.0,
+                    "heading"});
+    }
+  }
+  if (motion_.nhcApplies()) {
+    const GyroMean g = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
+                                in_.description.imu_noise.gyro_noise_density);
+    w_.addFactor({planar(std::make_shared<NhcModel>(g.rate, o_.models.nhc_sigma)),
+                  {e.v, e.q, e.bg, kPbm, kQbm},
+                  0.0,
+                  "nhc"});
+  }
+  gnssFactors(e, rover, base);
+  epochs_.push_back(e);
+  FgoEpoch& cur = epochs_.back();
+  w_.solve(fo_.max_iterations);
+  for (int r = 0; r < fo_.max_rejections && rejectWorstRow(cur); ++r) w_.solve(fo_.max_iterations);
+  EpochOutcome out;
+  out.used = true;
+  out.fixed = o_.ambiguity_resolution && resolve(cur);
+  run_->count(Counter::kDdRows, static_cast<long>(cur.code_rows.size() + cur.phase_rows.size()));
+  out.recorded = true;
+  out.estimate = estimate(cur);
+  outputTrajectory(epochs_[epochs_.size() - 2], cur);
+  if (static_cast<int>(epochs_.size()) > fo_.window) marginalizeOldest();
+  run_ = nullptr;
+  return out;
+}
+
+void FactorGraphCore::trajectoryUpTo(double t, const std::function<void(const TruthSample&)>& out) {
+  size_t n = 0;
+  while (n < trajectory_.size() && trajectory_[n].t <= t + 1e-9) out(trajectory_[n++]);
+  trajectory_.erase(trajectory_.begin(), trajectory_.begin() + static_cast<long>(n));
+}
+
+double FactorGraphCore::oldestSampleNeeded() const {
+  // The trajectory is predicted from the epoch before the newest; the motion detectors and the
+  // mean gyro look half a window around an epoch.
+  return epochs_.front().t - o_.models.motion.window_s;
+}
+
+}  // namespace giocal

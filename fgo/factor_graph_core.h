@@ -1,0 +1,103 @@
+// FactorGraphCore: the sliding-window factor graph as the online Calibrator's estimator: one state
+// per GNSS epoch joined by IMU and odometer preintegration, DD code/phase and Doppler factors,
+// motion constraints, ambiguity fixes; the oldest epoch is marginalized into a prior.
+#pragma once
+
+#include <deque>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "common/calibration/calibration_inputs.h"
+#include "common/calibration/calibration_options.h"
+#include "common/calibration/initial_state.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/code_outlier_check.h"
+#include "common/gnss/dd_epoch.h"
+#include "common/gnss/doppler.h"
+#include "common/models/dd_gnss_model.h"
+#include "common/motion/motion_detector.h"
+#include "common/online/estimator_core.h"
+#include "fgo/fgo_options.h"
+#include "fgo/sliding_window.h"
+
+namespace giocal {
+
+/// The variables of one GNSS epoch.
+struct FgoEpoch {
+  double t = 0.0;
+  int k = 0;
+  bool still = false;
+  std::string p, q, v, ba, bg, sv, sw, cd;
+  DdEpoch dd;
+  std::vector<DdObservation> code_rows, phase_rows;
+  std::vector<DopplerObservation> doppler;
+  Eigen::Vector3d gyro = Eigen::Vector3d::Zero();
+
+  std::vector<std::string> all() const { return {p, q, v, ba, bg, sv, sw, cd}; }
+};
+
+class FactorGraphCore : public EstimatorCore {
+ public:
+  /// `sensors` (the Calibrator's buffers) and `orbits` must outlive the core.
+  FactorGraphCore(const CalibrationInputs& sensors, const BroadcastOrbits& orbits,
+                  const CalibrationOptions& options, const FgoOptions& fgo_options,
+                  const InitialState& init);
+
+  bool takesOdometerEvents() const override { return false; }
+  double time() const override { return epochs_.back().t; }
+  bool acceptsEpoch(double t) const override { return t > epochs_.back().t + 1e-6; }
+  EpochOutcome gnss(const ObsEpoch& rover, const ObsEpoch& base, CalibrationRun& run) override;
+  CalibrationEstimate calibration() const override { return estimate(epochs_.back()); }
+  NavState nav() const override { return nav(epochs_.back()); }
+  void trajectoryUpTo(double t, const std::function<void(const TruthSample&)>& out) override;
+  double oldestSampleNeeded() const override;
+
+ private:
+  FgoEpoch newEpoch(double t);
+  void addNavVariables(const FgoEpoch& e, const NavState& x, double s_v, double s_w, double cd);
+  NavState nav(const FgoEpoch& e) const;
+  void feedMotion(double t, const Eigen::Vector3d& b_g);
+  void start(const InitialState& init);
+  CalibrationEstimate estimate(const FgoEpoch& e) const;
+  void outputTrajectory(const FgoEpoch& from, const FgoEpoch& to);
+  void marginalizeOldest();
+  /// With p_b_m.z held (planar motion), vehicle-motion factors are blind to p_b_m along the
+  /// vehicle's vertical axis (common/models/planar_motion_projection.h).
+  std::shared_ptr<const MeasurementModel> planar(std::shared_ptr<const MeasurementModel> m) const;
+
+  // GNSS factors (fgo/factor_graph_gnss.cc).
+  void gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsEpoch& base);
+  void addGnssRowFactors(const FgoEpoch& e);
+  std::string ambiguityVar(const SatId& sat, char band) const;
+  void newAmbiguity(const SatId& sat, char band, double value, double lambda);
+  std::vector<std::string> phaseVars(const DdGnssModel& model,
+                                     const std::vector<DdObservation>& rows) const;
+  /// |residual| / sigma of each of the epoch's code or phase rows at the current values.
+  Eigen::VectorXd normalizedRowResiduals(const FgoEpoch& e, bool phase) const;
+  bool rejectWorstRow(FgoEpoch& e);
+  bool resolve(FgoEpoch& e);
+
+  const CalibrationInputs& in_;
+  CalibrationOptions o_;
+  FgoOptions fo_;
+  CalibrationRun* run_ = nullptr;  // the run being counted into, during gnss()
+  LocalFrame frame_;
+  const BroadcastOrbits& orbits_;
+  DdEpochBuilder builder_;
+  CodeOutlierCheck rover_check_, base_check_;
+  MotionDetector motion_;
+  SlidingWindow w_;
+  std::deque<FgoEpoch> epochs_;
+  int next_k_ = 0;
+  std::map<std::pair<SatId, char>, int> amb_version_;
+  std::set<std::pair<std::string, std::string>> held_fixes_;
+  double motion_fed_t_ = -INFINITY;
+  double next_output_ = 0.0;
+  bool clock_drift_started_ = false;
+  std::vector<TruthSample> trajectory_;  // computed with the epoch, handed out by trajectoryUpTo
+};
+
+}  // namespace giocal

@@ -1,0 +1,143 @@
+#include "replay/replay.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+#include "common/gnss/rinex_obs.h"
+#include "common/io/data_error.h"
+#include "common/io/sensor_logs.h"
+#include "replay/estimator_factory.h"
+
+namespace giocal {
+namespace {
+
+/// One time-ordered source: the time of the item it holds (infinity when exhausted) and a step
+/// that hands that item to the calibrator and returns the time of the next.
+struct Stream {
+  double t = INFINITY;
+  std::function<double()> step;
+  long count = 0;
+};
+
+/// Hands every stream's items to the calibrator, oldest first.
+void merge(std::vector<Stream>& streams) {
+  while (true) {
+    Stream* next = nullptr;
+    for (Stream& s : streams) {
+      if (s.t < INFINITY && (!next || s.t < next->t)) next = &s;
+    }
+    if (!next) return;
+    next->t = next->step();
+    ++next->count;
+  }
+}
+
+/// A stream over a reader with bool next(T&).
+template <class Reader, class T>
+Stream readerStream(std::shared_ptr<Reader> reader, std::function<void(const T&)> push) {
+  auto held = std::make_shared<T>();
+  Stream s;
+  s.t = reader->next(*held) ? held->t : INFINITY;
+  s.step = [reader, held, push]() {
+    push(*held);
+    return reader->next(*held) ? held->t : INFINITY;
+  };
+  return s;
+}
+
+/// A stream over a vector.
+template <class T>
+Stream vectorStream(const std::vector<T>& v, std::function<void(const T&)> push) {
+  Stream s;
+  auto k = std::make_shared<size_t>(0);
+  s.t = v.empty() ? INFINITY : v.front().t;
+  s.step = [&v, k, push]() {
+    push(v[(*k)++]);
+    return *k < v.size() ? v[*k].t : INFINITY;
+  };
+  return s;
+}
+
+Eigen::Vector3d basePosition(const DatasetDescription& d, const ObsHeader& base_header) {
+  const Eigen::Vector3d p =
+      d.base_position_ecef ? *d.base_position_ecef : base_header.approx_position;
+  if (p.norm() < 6.0e6) {
+    throw DataError(d.pathOf(d.base_obs), 0,
+                    "no APPROX POSITION XYZ in the header; give gnss.base_position_ecef in "
+                    "dataset.yaml");
+  }
+  return p;
+}
+
+}  // namespace
+
+std::optional<TruthCalibration> readFolderTruth(const std::string& folder) {
+  const std::string truth = folder + "/truth_calib.yaml";
+  if (!std::filesystem::exists(truth)) return std::nullopt;
+  return readTruthCalibration(truth);
+}
+
+CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const DatasetDescription d = readDatasetDescription(folder);
+  auto need = [&](const std::string& name) {
+    const std::string p = d.pathOf(name);
+    if (!std::filesystem::exists(p)) throw DataError(p, 0, "file missing");
+    return p;
+  };
+  auto imu = std::make_shared<ImuLogReader>(need(d.imu));
+  auto odom = std::make_shared<OdomLogReader>(need(d.odom));
+  auto rover = std::make_shared<RinexObsReader>(need(d.rover_obs));
+  auto base = std::make_shared<RinexObsReader>(need(d.base_obs));
+  std::vector<NavData> navs;
+  for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
+  std::unique_ptr<Calibrator> cal = makeCalibrator(
+      job.estimator, d, basePosition(d, base->header()), job.options, job.fgo_options, sink);
+  cal->addNavigation(mergeNav(navs));
+  Calibrator& c = *cal;
+  std::vector<Stream> streams;
+  streams.push_back(
+      readerStream<ImuLogReader, ImuSample>(imu, [&c](const ImuSample& s) { c.addImu(s); }));
+  streams.push_back(readerStream<OdomLogReader, OdomSample>(
+      odom, [&c](const OdomSample& s) { c.addOdometer(s); }));
+  streams.push_back(
+      readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
+  streams.push_back(
+      readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
+  merge(streams);
+  if (streams[0].count < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
+  if (streams[1].count == 0) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
+  if (streams[2].count == 0) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
+  if (streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
+  c.finish();
+  CalibrationRun run = c.run();
+  if (run.data_duration_s <= 0.0) {
+    throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
+  }
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  run.load_time_s = std::max(0.0, total - run.wall_time_s);
+  return run;
+}
+
+CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, RunSink* sink) {
+  std::unique_ptr<Calibrator> cal =
+      makeCalibrator(job.estimator, in.description, in.base_e, job.options, job.fgo_options, sink);
+  cal->addNavigation(in.nav);
+  Calibrator& c = *cal;
+  std::vector<Stream> streams;
+  streams.push_back(vectorStream<ImuSample>(in.imu, [&c](const ImuSample& s) { c.addImu(s); }));
+  streams.push_back(
+      vectorStream<OdomSample>(in.odom, [&c](const OdomSample& s) { c.addOdometer(s); }));
+  streams.push_back(
+      vectorStream<ObsEpoch>(in.rover.epochs, [&c](const ObsEpoch& e) { c.addRover(e); }));
+  streams.push_back(
+      vectorStream<ObsEpoch>(in.base.epochs, [&c](const ObsEpoch& e) { c.addBase(e); }));
+  merge(streams);
+  c.finish();
+  return c.run();
+}
+
+}  // namespace giocal

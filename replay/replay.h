@@ -1,0 +1,31 @@
+// Replays recorded data through the online Calibrator, in time order: a dataset folder read
+// incrementally (calibrate, compare), or data already in memory (tests, Monte Carlo).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "common/calibration/calibration_inputs.h"
+#include "common/online/calibrator.h"
+#include "fgo/fgo_options.h"
+
+namespace giocal {
+
+struct ReplayJob {
+  std::string estimator = "ekf";
+  CalibrationOptions options;
+  FgoOptions fgo_options;
+};
+
+/// Reads the folder's files sample by sample while calibrating (memory does not grow with the
+/// log). run.load_time_s is the time spent reading. Throws DataError for bad files (naming the
+/// file and line) and std::runtime_error when no initial state is ever found.
+CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink);
+
+/// The same from loaded inputs.
+CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, RunSink* sink);
+
+/// The truth calibration of a dataset folder (truth_calib.yaml), when it has one.
+std::optional<TruthCalibration> readFolderTruth(const std::string& folder);
+
+}  // namespace giocal
