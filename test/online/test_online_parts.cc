@@ -1,0 +1,75 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "common/online/convergence.h"
+#include "common/online/latency_histogram.h"
+#include "common/online/reorder_buffer.h"
+
+namespace giocal {
+namespace {
+
+TEST(ReorderBuffer, ReleasesInTimeOrderAfterTheLagAndRefusesThePast) {
+  ReorderBuffer<int> b(0.5);
+  std::vector<double> out;
+  const auto take = [&](double t, int&) { out.push_back(t); };
+  EXPECT_TRUE(b.push(1.0, 0));
+  EXPECT_TRUE(b.push(0.8, 0));  // arrived late but within the lag
+  b.release(take);
+  EXPECT_TRUE(out.empty());
+  EXPECT_TRUE(b.push(1.4, 0));
+  b.release(take);
+  EXPECT_EQ(out, std::vector<double>({0.8}));
+  EXPECT_TRUE(b.push(2.0, 0));
+  b.release(take);
+  EXPECT_EQ(out, std::vector<double>({0.8, 1.0, 1.4}));
+  EXPECT_FALSE(b.push(1.2, 0));  // before what was released: refused
+  EXPECT_FALSE(b.push(NAN, 0));
+  b.release(take, true);
+  EXPECT_EQ(out, std::vector<double>({0.8, 1.0, 1.4, 2.0}));
+}
+
+CalibrationEstimate estimate(double t, double s_v, double sd_s_v) {
+  CalibrationEstimate e;
+  e.t = t;
+  e.calib.s_v = s_v;
+  e.cov = Eigen::Matrix<double, 8, 8>::Identity();  // every other state far from its target
+  e.cov(0, 0) = sd_s_v * sd_s_v;
+  return e;
+}
+
+TEST(ConvergenceMonitor, ConvergesWhenTheSigmaIsSmallAndTheValueSteadyOverTheTime) {
+  ConvergenceOptions o;
+  o.sigma_scale = 1e-3;
+  o.steady_s = 10.0;
+  ConvergenceMonitor m(o, true);
+  // Sigma below target from t = 5, but the value still moves until t = 20.
+  std::vector<ConvergenceEvent> events;
+  for (int t = 0; t <= 40; ++t) {
+    const double value = t < 20 ? 0.01 * t : 0.2;
+    for (const auto& e : m.update(estimate(t, value, t < 5 ? 1e-2 : 5e-4))) events.push_back(e);
+  }
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].state, 0);
+  EXPECT_TRUE(events[0].converged);
+  EXPECT_DOUBLE_EQ(events[0].t, 30.0);  // 10 s after the value stopped moving
+  EXPECT_DOUBLE_EQ(m.convergedAt(0), 30.0);
+  EXPECT_FALSE(m.done());        // the others never did
+  EXPECT_FALSE(m.takesPart(4));  // p_b_m.z held
+  // A re-opened covariance undoes it.
+  const auto lost = m.update(estimate(41, 0.2, 5e-3));
+  ASSERT_EQ(lost.size(), 1u);
+  EXPECT_FALSE(lost[0].converged);
+}
+
+TEST(LatencyHistogram, PercentilesWithinTheBinWidth) {
+  LatencyHistogram h;
+  for (int k = 1; k <= 1000; ++k) h.add(k * 1e-4);  // 0.1 ms .. 100 ms
+  EXPECT_NEAR(h.mean(), 0.05005, 1e-9);
+  EXPECT_DOUBLE_EQ(h.max(), 0.1);
+  EXPECT_NEAR(h.percentile(0.5), 0.05, 0.05 * 0.06);
+  EXPECT_NEAR(h.percentile(0.99), 0.099, 0.099 * 0.06);
+}
+
+}  // namespace
+}  // namespace giocal
