@@ -1,0 +1,85 @@
+// How a robot's driver code feeds giocal's online calibrator: each sensor callback pushes its
+// sample as it arrives (in any interleaving; the calibrator puts them back in time order), and a
+// 1 Hz timer reads the calibration, its sigma and the health. Here the "drivers" are played from
+// a dataset folder: robot_driver_example <dataset dir> [ekf|fgo]
+#include <cstdio>
+#include <string>
+
+#include "common/gnss/rinex_obs.h"
+#include "common/io/sensor_logs.h"
+#include "replay/estimator_factory.h"
+
+using namespace giocal;
+
+/// What would live in the robot's node: one calibrator, one callback per sensor.
+class CalibrationNode {
+ public:
+  CalibrationNode(const std::string& estimator, const DatasetDescription& robot,
+                  const Eigen::Vector3d& base_ecef)
+      : calibrator_(makeCalibrator(estimator, robot, base_ecef, CalibrationOptions{},
+                                   FgoOptions{}, nullptr)) {}
+
+  void onImu(const ImuSample& s) { calibrator_->addImu(s); }
+  void onWheelOdometry(const OdomSample& s) { calibrator_->addOdometer(s); }
+  void onRoverEpoch(const ObsEpoch& e) { calibrator_->addRover(e); }
+  void onBaseEpoch(const ObsEpoch& e) { calibrator_->addBase(e); }
+  void onEphemeris(const Ephemeris& e) { calibrator_->addEphemeris(e); }
+
+  void onTimer() {  // e.g. publish the calibration once a second
+    const CalibratorHealth h = calibrator_->health();
+    const auto c = calibrator_->calibration();
+    std::printf("t=%.0f %-12s", h.t_data, stateName(h.state));
+    if (c) {
+      const auto sd = c->sigma();
+      std::printf(" s_v %+.4f (%.4f)  s_w %+.4f (%.4f)  p_b_m %+.3f %+.3f m (%.3f %.3f)",
+                  c->calib.s_v, sd[0], c->calib.s_w, sd[1], c->calib.p_b_m.x(),
+                  c->calib.p_b_m.y(), sd[2], sd[3]);
+    }
+    std::printf("  converged %zu, buffered %zu\n", h.converged.size(), h.buffered_samples);
+  }
+  void onShutdown() { calibrator_->finish(); }
+
+ private:
+  std::unique_ptr<Calibrator> calibrator_;
+};
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: robot_driver_example <dataset dir> [ekf|fgo]\n");
+    return 2;
+  }
+  try {
+    const DatasetDescription d = readDatasetDescription(argv[1]);
+    RinexObsReader rover(d.pathOf(d.rover_obs)), base(d.pathOf(d.base_obs));
+    const Eigen::Vector3d base_e =
+        d.base_position_ecef ? *d.base_position_ecef : base.header().approx_position;
+    CalibrationNode node(argc > 2 ? argv[2] : "ekf", d, base_e);
+    for (const std::string& n : d.nav) {
+      for (const Ephemeris& e : readRinexNav(d.pathOf(n)).ephemerides) node.onEphemeris(e);
+    }
+    // The drivers: the IMU drives the clock; the GNSS epochs arrive a little after their time.
+    ImuLogReader imu(d.pathOf(d.imu));
+    OdomLogReader odom(d.pathOf(d.odom));
+    ImuSample s;
+    OdomSample o;
+    ObsEpoch r, b;
+    bool have_o = odom.next(o), have_r = rover.next(r), have_b = base.next(b);
+    double next_timer = -1.0;
+    while (imu.next(s)) {
+      node.onImu(s);
+      for (; have_o && o.t <= s.t; have_o = odom.next(o)) node.onWheelOdometry(o);
+      for (; have_r && r.t + 0.2 <= s.t; have_r = rover.next(r)) node.onRoverEpoch(r);
+      for (; have_b && b.t + 0.3 <= s.t; have_b = base.next(b)) node.onBaseEpoch(b);
+      if (s.t >= next_timer) {
+        if (next_timer > 0.0) node.onTimer();
+        next_timer = s.t + (next_timer > 0.0 ? 10.0 : 0.0);
+      }
+    }
+    node.onShutdown();
+    node.onTimer();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "robot_driver_example: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
