@@ -8,6 +8,7 @@
 #include "apps/live_run_writer.h"
 #include "common/calibration/calibration_options.h"
 #include "common/math/rotation.h"
+#include "replay/config.h"
 #include "replay/estimator_factory.h"
 #include "replay/replay.h"
 
@@ -52,8 +53,9 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
 CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   ReplayJob replay;
   replay.estimator = job.estimator;
-  replay.options = readCalibrationOptions(job.config);
-  replay.fgo_options = readFgoOptions(job.config);
+  const GiocalConfig config = readGiocalConfig(job.config);
+  replay.options = config.calibration;
+  replay.fgo_options = config.fgo;
   coreFactory(job.estimator, replay.options);  // an unknown estimator fails before any output
   if (!job.overwrite) {
     for (const std::string& f : calibrationOutputFiles()) {

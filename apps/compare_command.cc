@@ -10,6 +10,7 @@
 #include "apps/live_run_writer.h"
 #include "common/io/atomic_file.h"
 #include "common/math/rotation.h"
+#include "replay/config.h"
 #include "replay/replay.h"
 
 namespace giocal {
@@ -33,8 +34,9 @@ void runCompare(const CompareJob& job, std::ostream& log) {
     }
   }
   ReplayJob replay;
-  replay.options = readCalibrationOptions(job.config);
-  replay.fgo_options = readFgoOptions(job.config);
+  const GiocalConfig config = readGiocalConfig(job.config);
+  replay.options = config.calibration;
+  replay.fgo_options = config.fgo;
   const std::optional<TruthCalibration> truth_file = readFolderTruth(job.data);
   const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
   CalibrationRun runs[2];

@@ -12,6 +12,7 @@
 #include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
 #include "common/io/data_error.h"
+#include "replay/config.h"
 
 namespace po = boost::program_options;
 
@@ -75,7 +76,8 @@ int runRtkCommand(int argc, char** argv) {
   }
   if (vm.count("base-pos"))
     job.base_pos = giocal::parseBasePosition(vm["base-pos"].as<std::string>());
-  if (vm.count("config")) job.options = giocal::readRtkOptions(vm["config"].as<std::string>());
+  if (vm.count("config"))
+    job.options = giocal::readGiocalConfig(vm["config"].as<std::string>()).rtk;
   const giocal::RtkSummary s = giocal::runRtk(job);
   std::cout << "giocal rtk: " << s.epochs << " epochs, " << s.fixed << " fixed ("
             << (s.epochs ? 100.0 * s.fixed / s.epochs : 0.0) << " %), " << s.floats << " float, "

@@ -28,6 +28,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/initial_state.h"
 #include "common/math/rotation.h"
+#include "replay/config.h"
 #include "replay/estimator_factory.h"
 #include "replay/replay.h"
 #include "sim/simulator.h"
@@ -131,8 +132,9 @@ int main(int argc, char** argv) {
   std::string edits;
   if (straight_s >= 0.0) edits += ", straight " + std::to_string(straight_s) + " s";
   if (arc_s >= 0.0) edits += ", arcs " + std::to_string(arc_s) + " s";
-  const giocal::CalibrationOptions options = giocal::readCalibrationOptions(config);
-  const giocal::FgoOptions fgo_options = giocal::readFgoOptions(config);
+  const giocal::GiocalConfig parsed = giocal::readGiocalConfig(config);
+  const giocal::CalibrationOptions options = parsed.calibration;
+  const giocal::FgoOptions fgo_options = parsed.fgo;
   std::map<std::string, Runner> estimators;
   for (const std::string& name : giocal::estimatorNames()) {
     estimators[name] = [name, &fgo_options](const giocal::CalibrationInputs& in,

@@ -5,9 +5,12 @@
 namespace giocal {
 
 FgoOptions readFgoOptions(const std::string& path) {
+  if (path.empty()) return {};
+  return readFgoOptions(YamlFields(path));
+}
+
+FgoOptions readFgoOptions(const YamlFields& y) {
   FgoOptions o;
-  if (path.empty()) return o;
-  const YamlFields y(path);
   o.window = static_cast<int>(y.numberOr("fgo.window", o.window, 2, 1000));
   o.max_iterations = static_cast<int>(y.numberOr("fgo.max_iterations", o.max_iterations, 1, 1000));
   o.code_huber = y.numberOr("fgo.code_huber", o.code_huber, 0.0, 1e6);

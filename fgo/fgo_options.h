@@ -6,6 +6,8 @@
 
 namespace giocal {
 
+class YamlFields;
+
 struct FgoOptions {
   int window = 30;               // GNSS epochs kept in the window (chosen by measurement, README)
   int max_iterations = 10;       // Ceres iterations per solve
@@ -16,5 +18,8 @@ struct FgoOptions {
 
 /// Throws DataError naming the file, line and problem; an empty path gives the defaults.
 FgoOptions readFgoOptions(const std::string& path);
+/// The same from a configuration already parsed (keys asked for are remembered, see
+/// YamlFields::rejectUnknownKeys).
+FgoOptions readFgoOptions(const YamlFields& y);
 
 }  // namespace giocal

@@ -7,10 +7,14 @@
 namespace giocal {
 
 CalibrationOptions readCalibrationOptions(const std::string& path) {
+  if (path.empty()) return {};
+  return readCalibrationOptions(YamlFields(path));
+}
+
+CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   CalibrationOptions o;
-  if (path.empty()) return o;
-  o.models = readModelOptions(path);
-  const RtkOptions rtk = readRtkOptions(path);
+  o.models = readModelOptions(y);
+  const RtkOptions rtk = readRtkOptions(y);
   o.dd = rtk.dd;
   o.lambda = rtk.lambda;
   o.ambiguity_noise = rtk.ambiguity_noise;
@@ -18,7 +22,6 @@ CalibrationOptions readCalibrationOptions(const std::string& path) {
   o.doppler.elevation_mask_deg = o.dd.elevation_mask_deg;
   o.doppler.systems = o.dd.systems;
 
-  const YamlFields y(path);
   const std::string s = "calibration.";
   auto flag = [&](const std::string& key, bool fallback) {
     return y.numberOr(s + key, fallback ? 1 : 0, 0, 1) != 0.0;

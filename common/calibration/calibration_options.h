@@ -13,6 +13,8 @@
 
 namespace giocal {
 
+class YamlFields;
+
 /// How the filter finds its first state: a static window for roll, pitch and gyro bias, then the
 /// heading from the GNSS displacement of the first straight-ish drive.
 struct InitOptions {
@@ -78,5 +80,7 @@ struct CalibrationOptions {
 /// Defaults, overridden by the keys present in `path` (empty: defaults only). Throws DataError
 /// naming the file, line and problem.
 CalibrationOptions readCalibrationOptions(const std::string& path);
+/// The same from a configuration already parsed.
+CalibrationOptions readCalibrationOptions(const YamlFields& y);
 
 }  // namespace giocal

@@ -5,7 +5,11 @@
 namespace giocal {
 
 RtkOptions readRtkOptions(const std::string& path) {
-  const YamlFields y(path);
+  if (path.empty()) return {};
+  return readRtkOptions(YamlFields(path));
+}
+
+RtkOptions readRtkOptions(const YamlFields& y) {
   RtkOptions o;
   const std::string s = "rtk.";
   o.dd.elevation_mask_deg =

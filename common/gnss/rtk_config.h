@@ -7,7 +7,12 @@
 
 namespace giocal {
 
+class YamlFields;
+
 /// Throws DataError naming the file, line and problem.
 RtkOptions readRtkOptions(const std::string& path);
+/// The same from a configuration already parsed (keys asked for are remembered, see
+/// YamlFields::rejectUnknownKeys).
+RtkOptions readRtkOptions(const YamlFields& y);
 
 }  // namespace giocal

@@ -6,7 +6,11 @@
 namespace giocal {
 
 ModelOptions readModelOptions(const std::string& path) {
-  const YamlFields y(path);
+  if (path.empty()) return {};
+  return readModelOptions(YamlFields(path));
+}
+
+ModelOptions readModelOptions(const YamlFields& y) {
   ModelOptions o;
   const std::string s = "models.";
   o.motion.window_s = y.numberOr(s + "motion_window_s", o.motion.window_s, 0.05, 60.0);

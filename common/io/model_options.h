@@ -8,6 +8,8 @@
 
 namespace giocal {
 
+class YamlFields;
+
 struct ModelOptions {
   MotionDetectorOptions motion;
   double zupt_sigma = 0.01;             // zero-velocity noise [m/s]
@@ -19,5 +21,8 @@ struct ModelOptions {
 /// Reads the "models" section of a giocal YAML config; keys left out keep their defaults.
 /// Throws DataError naming the file, line and problem.
 ModelOptions readModelOptions(const std::string& path);
+/// The same from a configuration already parsed (keys asked for are remembered, see
+/// YamlFields::rejectUnknownKeys).
+ModelOptions readModelOptions(const YamlFields& y);
 
 }  // namespace giocal

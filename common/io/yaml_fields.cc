@@ -1,5 +1,6 @@
 #include "common/io/yaml_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -8,6 +9,34 @@
 namespace giocal {
 
 namespace {
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diag = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+/// Dotted keys of the leaves (scalars and lists) under `node`, with their nodes.
+void leaves(const YAML::Node& node, const std::string& prefix,
+            std::vector<std::pair<std::string, YAML::Node>>& out) {
+  if (!node.IsMap()) {
+    out.push_back({prefix, node});
+    return;
+  }
+  for (const auto& kv : node) {
+    const std::string key = (prefix.empty() ? "" : prefix + ".") + kv.first.as<std::string>();
+    leaves(kv.second, key, out);
+  }
+}
+
 std::vector<std::string> splitKey(const std::string& key) {
   std::vector<std::string> parts;
   std::string part;
@@ -41,6 +70,7 @@ void YamlFields::fail(const std::string& key, const std::string& problem) const 
 }
 
 YAML::Node YamlFields::find(const std::string& key) const {
+  asked_.insert(key);
   // yaml-cpp's operator[] on a const node never inserts, but reassigning a Node rebinds it in
   // place, so walk with fresh copies.
   std::vector<YAML::Node> chain{root_};
@@ -55,6 +85,7 @@ YAML::Node YamlFields::find(const std::string& key) const {
 }
 
 bool YamlFields::has(const std::string& key) const {
+  asked_.insert(key);
   std::vector<YAML::Node> chain{root_};
   for (const auto& part : splitKey(key)) {
     const YAML::Node& cur = chain.back();
@@ -141,6 +172,30 @@ Eigen::Vector3d YamlFields::vector3(const std::string& key, double min, double m
     fail(key, msg.str());
   }
   return v;
+}
+
+void YamlFields::rejectUnknownKeys(const std::vector<std::string>& other_sections) const {
+  std::vector<std::pair<std::string, YAML::Node>> keys;
+  leaves(root_, "", keys);
+  for (const auto& [key, node] : keys) {
+    if (asked_.count(key)) continue;
+    const std::string section = key.substr(0, key.find('.'));
+    if (std::find(other_sections.begin(), other_sections.end(), section) != other_sections.end())
+      continue;
+    std::string nearest;
+    size_t best = 4;  // suggest only close spellings
+    for (const std::string& known : asked_) {
+      const size_t d = editDistance(key, known);
+      if (d < best) {
+        best = d;
+        nearest = known;
+      }
+    }
+    throw DataError(path_, lineOf(node),
+                    "unknown key '" + key + "'" +
+                        (nearest.empty() ? std::string(" (not a giocal option)")
+                                         : "; did you mean '" + nearest + "'?"));
+  }
 }
 
 }  // namespace giocal

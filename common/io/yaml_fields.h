@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -36,12 +37,18 @@ class YamlFields {
 
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 
+  /// Throws DataError at the first key of the file that no reader has asked for (a misspelling
+  /// or a key of another version), naming the line, the key and the nearest known key. Keys under
+  /// `other_sections` (top-level names) belong to other readers and are not checked.
+  void rejectUnknownKeys(const std::vector<std::string>& other_sections = {}) const;
+
  private:
   YAML::Node find(const std::string& key) const;  // throws when missing
   long lineOf(const YAML::Node& node) const;
 
   std::string path_;
   YAML::Node root_;
+  mutable std::set<std::string> asked_;  // every key looked up, present or not
 };
 
 }  // namespace giocal
