@@ -1,7 +1,8 @@
 #include "ekf/ekf_core.h"
 
 #include <algorithm>
-#include <sstream>
+
+#include "common/io/text.h"
 
 namespace giocal {
 namespace {
@@ -12,13 +13,6 @@ bool finiteState(const StateRegistry& s) {
     if (!s.value(n).allFinite()) return false;
   }
   return true;
-}
-
-std::string at(double t) {
-  std::ostringstream s;
-  s.precision(10);
-  s << t;
-  return s.str();
 }
 
 }  // namespace
@@ -38,7 +32,8 @@ void EkfCore::odometer(const OdomSample& sample, CalibrationRun& run) {
   run.count(Counter::kCalibrationReopened);
   if (run.counter(Counter::kCalibrationReopened) > 1) return;
   run.warn(std::to_string(options_.max_odometer_rejections) +
-           " odometer intervals in a row rejected by the innovation gate before t=" + at(sample.t) +
+           " odometer intervals in a row rejected by the innovation gate before t=" +
+           timeText(sample.t) +
            ": the filter was more certain of its calibration than the odometer allows (a poor "
            "initial guess, wheel slip, wrong scale or time offset); the covariance of p_b_m and "
            "q_b_m was increased by the prior's (counter calibration_reopened)");

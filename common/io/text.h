@@ -1,6 +1,7 @@
-// Small text helpers shared by the file readers.
+// Small text helpers shared by the file readers and the run messages.
 #pragma once
 
+#include <sstream>
 #include <string>
 
 namespace giocal {
@@ -11,6 +12,23 @@ inline std::string trim(const std::string& s) {
   if (b == std::string::npos) return "";
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
+}
+
+/// A data time in a message: ten significant digits (GPS seconds to 0.1 s).
+inline std::string timeText(double t) {
+  std::ostringstream s;
+  s.precision(10);
+  s << t;
+  return s.str();
+}
+
+/// v with `precision` digits after the point.
+inline std::string fixedText(double v, int precision) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(precision);
+  s << v;
+  return s.str();
 }
 
 }  // namespace giocal

@@ -6,59 +6,11 @@
 #include <stdexcept>
 
 #include "common/calibration/weak_directions.h"
+#include "common/io/text.h"
 #include "common/math/rotation.h"
+#include "common/online/busy_timer.h"
 
 namespace giocal {
-namespace {
-
-std::string at(double t) {
-  std::ostringstream s;
-  s.precision(10);
-  s << t;
-  return s.str();
-}
-
-std::string fixed(double v, int precision) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(precision);
-  s << v;
-  return s.str();
-}
-
-/// The dataset with its calibration prior replaced by an estimate (for a re-initialization).
-DatasetDescription withPrior(DatasetDescription d, const CalibrationEstimate& e) {
-  CalibrationPrior& p = d.initial_calibration;
-  p.mean = e.calib;
-  // Keep the prior's sigma where the estimate claims more (a diverged filter is not trusted).
-  p.sd_s_v = std::max(p.sd_s_v, std::sqrt(e.cov(calib_index::kSv, calib_index::kSv)));
-  p.sd_s_w = std::max(p.sd_s_w, std::sqrt(e.cov(calib_index::kSw, calib_index::kSw)));
-  return d;
-}
-
-/// Drops the samples before t but the last one before it (interpolation needs it), once they are
-/// at least half the buffer (amortized constant cost per sample).
-template <class T>
-void dropBefore(std::vector<T>& v, double t) {
-  auto it = std::lower_bound(v.begin(), v.end(), t, [](const T& s, double x) { return s.t < x; });
-  if (it != v.begin()) --it;
-  if (2 * (it - v.begin()) >= static_cast<long>(v.size())) v.erase(v.begin(), it);
-}
-
-/// Wall time spent inside the calibrator, added to a total on scope exit.
-class BusyTimer {
- public:
-  explicit BusyTimer(double& total) : total_(total), t0_(std::chrono::steady_clock::now()) {}
-  ~BusyTimer() {
-    total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-  }
-
- private:
-  double& total_;
-  std::chrono::steady_clock::time_point t0_;
-};
-
-}  // namespace
 
 const char* stateName(CalibratorState s) {
   switch (s) {
@@ -98,8 +50,8 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
 void Calibrator::dropped(Counter c, double t, const std::string& what) {
   run_.count(c);
   if (warned_.insert(c).second) {
-    run_.warn(what + " at t=" + at(t) + " dropped (further ones are counted in " + counterName(c) +
-              ")");
+    run_.warn(what + " at t=" + timeText(t) + " dropped (further ones are counted in " +
+              counterName(c) + ")");
   }
 }
 
@@ -165,8 +117,8 @@ void Calibrator::release(Datum& d) {
       }
       if (!buf_.imu.empty() && s.t - buf_.imu.back().t > options_.max_imu_gap_s) {
         run_.count(Counter::kImuGaps);
-        run_.warn("IMU gap of " + at(s.t - buf_.imu.back().t) +
-                  " s after t=" + at(buf_.imu.back().t) +
+        run_.warn("IMU gap of " + timeText(s.t - buf_.imu.back().t) +
+                  " s after t=" + timeText(buf_.imu.back().t) +
                   ": bridged by interpolation, the covariance grows with it");
       }
       if (std::isnan(t_imu_first_)) t_imu_first_ = s.t;
@@ -207,242 +159,6 @@ void Calibrator::release(Datum& d) {
       break;
   }
   ++released_;
-}
-
-bool Calibrator::ready(double t) const {
-  if (finishing_) return true;
-  // Events read ahead: the motion detectors' half window, the base epoch nearest in time.
-  const double look =
-      std::max(0.5 * options_.models.motion.window_s, options_.max_base_offset) + 0.05;
-  if (frontier_ < t + look) return false;
-  return (!buf_.imu.empty() && buf_.imu.back().t > t) ||
-         frontier_ >= t + options_.online.max_imu_wait_s;
-}
-
-const ObsEpoch* Calibrator::nearestBase(double t) const {
-  const auto& b = buf_.base.epochs;
-  auto it =
-      std::lower_bound(b.begin(), b.end(), t, [](const ObsEpoch& e, double x) { return e.t < x; });
-  const ObsEpoch* best = nullptr;
-  if (it != b.end()) best = &*it;
-  // Ties go to the later epoch, as BaseEpochMatcher does.
-  if (it != b.begin() && (!best || t - (it - 1)->t < best->t - t)) best = &*(it - 1);
-  return best && std::abs(best->t - t) <= options_.max_base_offset ? best : nullptr;
-}
-
-bool Calibrator::tryInitialize() {
-  if (buf_.imu.size() < 2 || buf_.odom.empty()) return false;
-  buf_.rover.epochs.clear();
-  for (const ObsEpoch& e : rover_) {
-    if (!ready(e.t) || e.t > buf_.imu.back().t) break;
-    if (e.t >= t_from_) buf_.rover.epochs.push_back(e);
-  }
-  // Nothing new since the last attempt (the attempt depends only on complete data before it).
-  if (buf_.rover.epochs.empty() || buf_.rover.epochs.back().t <= last_init_try_) return false;
-  last_init_try_ = buf_.rover.epochs.back().t;
-  buf_.description = dataset_;
-  buf_.nav = orbits_->nav();
-  const auto t0 = std::chrono::steady_clock::now();
-  std::string why;
-  const auto init = findInitialState(buf_, options_, dataset_.initial_calibration,
-                                     std::max(t_from_, buf_.imu.front().t), &why, &init_cache_);
-  init_time_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  buf_.rover.epochs.clear();
-  if (!init) {
-    why_not_initialized_ = why;
-    if (frontier_ - std::max(t_from_, buf_.imu.front().t) > options_.online.max_init_window_s) {
-      t_from_ = frontier_ - 0.5 * options_.online.max_init_window_s;
-      run_.warn("no initial state in " + fixed(options_.online.max_init_window_s, 0) +
-                " s of data (" + why + "); searching on from t=" + at(t_from_));
-    }
-    return false;
-  }
-  if (run_.initialization.empty()) {
-    run_.t_initialized = init->x.t;
-    run_.initialization = {{"static_window_s", init->static_window_s},
-                           {"heading_baseline_m", init->heading_baseline_m},
-                           {"heading_sigma_deg", init->heading_sigma * kRadToDeg},
-                           {"b_g_z_deg_h", init->x.b_g.z() * kRadToDeg * 3600.0}};
-  }
-  core_ = factory_(buf_, *orbits_, *init);
-  init_cache_ = {};
-  diverged_ = false;
-  say(init->x.t, std::string(run_.counter(Counter::kReinitializations) ? "re-" : "") +
-                     "initialized: heading from a " + fixed(init->heading_baseline_m, 1) +
-                     " m baseline, static window " + fixed(init->static_window_s, 1) + " s");
-  return true;
-}
-
-void Calibrator::process() {
-  while (true) {
-    if (!core_) {
-      if (!tryInitialize()) break;
-      continue;
-    }
-    double t_odo = INFINITY;
-    auto odo = buf_.odom.end();
-    if (core_->takesOdometerEvents()) {
-      // The next odometer sample after both the last one handed over and the state's time.
-      const double after = std::max(last_odo_event_, core_->time());
-      odo = std::upper_bound(buf_.odom.begin(), buf_.odom.end(), after,
-                             [](double x, const OdomSample& s) { return x < s.t; });
-      if (odo != buf_.odom.end()) t_odo = odo->t;
-    }
-    const double t_rover = rover_.empty() ? INFINITY : rover_.front().t;
-    const double t_next = std::min(t_odo, t_rover);
-    if (!std::isfinite(t_next) || !ready(t_next)) break;
-    const bool is_odo = t_odo <= t_rover;
-    if (buf_.imu.empty() || buf_.imu.back().t < t_next) {
-      if (finishing_) {  // past the last IMU sample: nothing more to process
-        rover_.clear();
-        last_odo_event_ = INFINITY;
-        break;
-      }
-      dropped(Counter::kDroppedWithoutImu, t_next,
-              "odometer or GNSS data with the IMU silent for online.max_imu_wait_s");
-      if (is_odo) {
-        last_odo_event_ = t_odo;
-      } else {
-        rover_.pop_front();
-      }
-      continue;
-    }
-    if (is_odo) {
-      last_odo_event_ = t_odo;
-      core_->odometer(*odo, run_);
-      core_->trajectoryUpTo(t_odo, [&](const TruthSample& s) {
-        if (sink_) sink_->trajectory(s);
-      });
-    } else {
-      const ObsEpoch rover = std::move(rover_.front());
-      rover_.pop_front();
-      dispatchRover(rover);
-    }
-  }
-  trim();
-}
-
-void Calibrator::dispatchRover(const ObsEpoch& rover) {
-  if (rover.t <= skip_rover_until_ || !core_->acceptsEpoch(rover.t)) return;
-  const ObsEpoch* base = nearestBase(rover.t);
-  if (!base) {
-    run_.count(Counter::kGnssWithoutBase);
-    return;
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  const EpochOutcome out = core_->gnss(rover, *base, run_);
-  latency_.add(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  if (out.diverged) {
-    run_.warn("the filter diverged at t=" + at(rover.t) +
-              " (GNSS code far outside its predicted spread); re-initializing");
-    run_.count(Counter::kReinitializations);
-    say(rover.t, "diverged; re-initializing from the data that follow");
-    dataset_ = withPrior(original_, core_->calibration());
-    core_.reset();
-    diverged_ = true;
-    t_from_ = rover.t;
-    last_init_try_ = -INFINITY;
-    skip_rover_until_ = rover.t;
-    rover_.push_front(rover);
-    return;
-  }
-  if (out.used) {
-    ++run_.gnss_epochs;
-    run_.fixed_epochs += out.fixed;
-  }
-  if (out.recorded) onEstimate(out.estimate);
-  core_->trajectoryUpTo(rover.t, [&](const TruthSample& s) {
-    if (sink_) sink_->trajectory(s);
-  });
-}
-
-void Calibrator::onEstimate(const CalibrationEstimate& e) {
-  run_.latest = e;
-  if (sink_) sink_->estimate(e);
-  for (const ConvergenceEvent& c : convergence_.update(e)) {
-    const std::string name = calibrationStateName(c.state);
-    if (c.converged) run_.converged_at[name] = rel(c.t);
-    say(c.t, name + (c.converged ? " converged: " : " no longer converged: ") +
-                 fixed(c.value, c.state < 2   ? 5
-                                : c.state < 5 ? 4
-                                              : 3) +
-                 " +- " +
-                 fixed(c.sigma, c.state < 2   ? 5
-                                : c.state < 5 ? 4
-                                              : 3) +
-                 calibrationStateUnit(c.state));
-  }
-  if (convergence_.done() && !done_said_) {
-    done_said_ = true;
-    run_.converged_at["calibration"] = rel(e.t);
-    say(e.t, "calibration converged: every observable parameter is steady within its target");
-  }
-  if (std::isnan(next_progress_)) next_progress_ = e.t + options_.online.progress_interval_s;
-  if (e.t >= next_progress_ && !convergence_.done()) {
-    next_progress_ += options_.online.progress_interval_s;
-    std::string open, weak;
-    for (int k = 0; k < 8; ++k) {
-      if (convergence_.takesPart(k) && !convergence_.converged(k))
-        open += std::string(open.empty() ? "" : ", ") + calibrationStateName(k);
-    }
-    for (const int k : weakStates(e, original_.initial_calibration))
-      weak += std::string(weak.empty() ? "" : ", ") + calibrationStateName(k);
-    say(e.t, "not converged yet: " + open +
-                 (weak.empty() ? "" : "; still near the prior (needs more excitation): " + weak));
-  }
-}
-
-void Calibrator::say(double t, const std::string& text) {
-  if (sink_) sink_->event(rel(t), text);
-}
-
-void Calibrator::trim() {
-  if (released_ % 64 != 0) return;
-  const double margin = std::max(5.0, 2.0 * options_.models.motion.window_s);
-  double keep = t_from_;
-  if (core_) {
-    keep = core_->oldestSampleNeeded();
-    if (!rover_.empty()) keep = std::min(keep, rover_.front().t);
-  }
-  keep -= margin;
-  dropBefore(buf_.imu, keep);
-  dropBefore(buf_.odom, keep);
-  dropBefore(buf_.base.epochs, keep - options_.max_base_offset);
-  if (!core_) {  // initializing: rover epochs before the search window are of no use
-    while (!rover_.empty() && rover_.front().t < t_from_) rover_.pop_front();
-  }
-}
-
-void Calibrator::finish() {
-  BusyTimer busy(busy_s_);
-  finishing_ = true;
-  reorder_.release([&](double, Datum& x) { release(x); }, true);
-  process();
-  if (!core_) {
-    if (!diverged_) {
-      throw std::runtime_error(
-          "could not initialize: " +
-          (why_not_initialized_.empty()
-               ? std::string("no rover epoch with IMU and odometer data around it")
-               : why_not_initialized_));
-    }
-    run_.warn("no re-initialization possible after t=" + at(t_from_) + ": " + why_not_initialized_);
-  }
-  if (core_ && (!run_.latest || run_.latest->t < core_->time())) onEstimate(core_->calibration());
-  if (run_.latest) {
-    for (const std::string& w : weakDirections(*run_.latest, original_.initial_calibration))
-      run_.warn(w);
-  }
-  if (!std::isnan(t_imu_first_) && !std::isnan(t_rover_first_)) {
-    run_.data_duration_s = std::max(
-        0.0, std::min(t_imu_last_, t_rover_last_) - std::max(t_imu_first_, t_rover_first_));
-  }
-  run_.timing["initialization_s"] = init_time_s_;
-  run_.timing["gnss_epoch_mean_s"] = latency_.mean();
-  run_.timing["gnss_epoch_p50_s"] = latency_.percentile(0.5);
-  run_.timing["gnss_epoch_p99_s"] = latency_.percentile(0.99);
-  run_.timing["gnss_epoch_max_s"] = latency_.max();
-  run_.wall_time_s = busy_s_;
 }
 
 std::optional<NavState> Calibrator::navState() const {
