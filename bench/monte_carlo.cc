@@ -7,9 +7,9 @@
 //                           [--arw-deg-sqrt-h A] [--gyro-bias-deg-h B]   (override the preset's
 //                           gyro) [--straight-s S]   (duration of the preset's straight
 //                           segments) [--arc-s S]   (of its arcs; 0 drops them: a drive that
-//                           never turns, README) [--guess-at-truth 1]   (start from the true
+//                           never turns, docs/results.md) [--guess-at-truth 1]   (start from the true
 //                           calibration, keeping the prior sigma: a diagnostic of linearization,
-//                           see README)
+//                           see docs/results.md)
 #include <sys/resource.h>
 #include <unistd.h>
 

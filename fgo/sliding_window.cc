@@ -110,7 +110,7 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double funct
   }
   ceres::Solver::Options options;
   // The window is a chain of epochs: sparse normal equations are ~3x faster than dense ones at
-  // window 30 (README, Measured). Dense only where Ceres was built without a sparse library.
+  // window 30 (docs/results.md). Dense only where Ceres was built without a sparse library.
   options.linear_solver_type =
       ceres::IsSparseLinearAlgebraLibraryTypeAvailable(options.sparse_linear_algebra_library_type)
           ? ceres::SPARSE_NORMAL_CHOLESKY
@@ -220,7 +220,7 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
   for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
   // The window's Hessian is sparse (a chain of epochs plus the calibration and ambiguity columns):
   // a sparse factorization is ~10x cheaper than a dense one at window 30, and CHOLMOD's ordering
-  // ~15x cheaper than Eigen's own AMD (measured, README).
+  // ~15x cheaper than Eigen's own AMD (measured, docs/results.md).
   // CHOLMOD reads the lower triangle only.
   std::vector<Eigen::Triplet<double>> triplets;
   forEachWhitenedFactor(

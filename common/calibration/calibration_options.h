@@ -63,7 +63,7 @@ struct CalibrationOptions {
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale
-  // error of badly guessed seeds (100-seed Monte Carlo: 1.8e-3 -> 1.4e-3, README).
+  // error of badly guessed seeds (100-seed Monte Carlo: 1.8e-3 -> 1.4e-3, docs/results.md).
   int odometer_iterations = 2;
   // This many odometer intervals in a row rejected by the NIS gate: the filter, not the odometer,
   // is wrong (overconfident in a wrong calibration); the covariance of p_b_m and q_b_m is

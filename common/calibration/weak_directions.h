@@ -13,7 +13,7 @@ namespace giocal {
 /// One message per observable state (s_v, s_w, p_b_m x and y, roll, pitch, yaw) whose 1-sigma in
 /// `final` is above `fraction` of the prior's: the data then add less than 1/fraction^2 - 1 times
 /// the prior's information (10 times at 0.3), the estimate stays near the guess, and along such a
-/// direction the reported sigma has been measured too small (README, Measured). p_b_m.z is left
+/// direction the reported sigma has been measured too small (docs/results.md). p_b_m.z is left
 /// out: it is unobservable under planar motion and summary.json says how it was treated.
 std::vector<std::string> weakDirections(const CalibrationEstimate& final,
                                         const CalibrationPrior& prior, double fraction = 0.3);

@@ -6,7 +6,7 @@
 // (1 + s). Least squares with a fixed weight then shrinks the scales by about
 // sigma^2 / E[(int w dt)^2] (regression dilution, errors in variables); with the weight at the
 // current scales the cost is the profile likelihood over the true readings, which is unbiased
-// (README, Measured: field preset, W scale).
+// (docs/results.md: field preset, W scale).
 #pragma once
 
 #include <memory>

@@ -89,7 +89,7 @@ TEST(SlidingWindow, AStiffChainMovesInOneSolve) {
   // 1e-5), seen weakly (sigma 0.1 per epoch) next to precise, already-satisfied residuals. The
   // least-squares solution is linear (x = 1 everywhere) and Gauss-Newton reaches it in one step;
   // Levenberg-Marquardt from Ceres' default trust region (1e4) barely moved it in 10 iterations,
-  // which froze the factor graph's s_w near the initial guess (README, Measured).
+  // which froze the factor graph's s_w near the initial guess (docs/results.md).
   SlidingWindow w;
   for (int k = 0; k < 5; ++k) {
     const std::string x = "x" + std::to_string(k), y = "y" + std::to_string(k);
