@@ -221,7 +221,9 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
     const auto [i, j] = pairs[static_cast<size_t>(k)];
     A(k, i) = 1.0;
     A(k, j) = -1.0;
-    a[k] = w_.value(amb[static_cast<size_t>(i)])[0] - w_.value(amb[static_cast<size_t>(j)])[0];
+    const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
+    a[k] =
+        window.value(amb[static_cast<size_t>(i)])[0] - window.value(amb[static_cast<size_t>(j)])[0];
   }
   const Eigen::MatrixXd Qa = A * C * A.transpose();
   std::vector<int> drop(static_cast<size_t>(na));

@@ -9,7 +9,7 @@ namespace giocal {
 class YamlFields;
 
 struct FgoOptions {
-  int window = 30;               // GNSS epochs kept in the window (chosen by measurement, docs/results.md)
+  int window = 30;  // GNSS epochs kept in the window (chosen by measurement, docs/results.md)
   int max_iterations = 10;       // Ceres iterations per solve
   double code_huber = 3.0;       // Huber threshold of DD code and Doppler factors [sigma]
   double rejection_sigma = 5.0;  // rows with post-solve residuals beyond this are removed

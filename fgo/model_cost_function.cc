@@ -6,12 +6,16 @@
 
 namespace giocal {
 
-ModelCostFunction::ModelCostFunction(std::shared_ptr<const MeasurementModel> model)
-    : model_(std::move(model)) {
+ModelCostFunction::ModelCostFunction(std::shared_ptr<const MeasurementModel> model,
+                                     std::shared_ptr<const Eigen::MatrixXd> sqrt_info)
+    : model_(std::move(model)), sqrt_info_(std::move(sqrt_info)) {
   set_num_residuals(model_->residualSize());
   for (const auto& b : model_->blocks())
     mutable_parameter_block_sizes()->push_back(b.ambientSize());
-  sqrt_info_ = whitener(model_->covariance(), model_->name());
+  if (!sqrt_info_) {
+    sqrt_info_ =
+        std::make_shared<const Eigen::MatrixXd>(whitener(model_->covariance(), model_->name()));
+  }
 }
 
 bool ModelCostFunction::Evaluate(const double* const* parameters, double* residuals,
@@ -20,7 +24,7 @@ bool ModelCostFunction::Evaluate(const double* const* parameters, double* residu
   std::vector<Eigen::MatrixXd> J;
   model_->evaluate(parameters, r, jacobians ? &J : nullptr);
   const int m = model_->residualSize();
-  Eigen::Map<Eigen::VectorXd>(residuals, m) = sqrt_info_ * r;
+  Eigen::Map<Eigen::VectorXd>(residuals, m) = *sqrt_info_ * r;
   if (!r.allFinite()) return false;
   if (!jacobians) return true;
   const auto& blocks = model_->blocks();
@@ -30,7 +34,7 @@ bool ModelCostFunction::Evaluate(const double* const* parameters, double* residu
     Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> out(
         jacobians[k], m, ambient);
     out.setZero();
-    out.leftCols(tangent) = sqrt_info_ * J[k];
+    out.leftCols(tangent) = *sqrt_info_ * J[k];
   }
   return true;
 }

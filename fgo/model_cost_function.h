@@ -14,15 +14,17 @@ namespace giocal {
 /// 4 doubles [w, x, y, z] to be used with RightQuaternionManifold.
 class ModelCostFunction : public ceres::CostFunction {
  public:
-  explicit ModelCostFunction(std::shared_ptr<const MeasurementModel> model);
+  /// `sqrt_info`: the model's whitener when already known (computed here otherwise).
+  explicit ModelCostFunction(std::shared_ptr<const MeasurementModel> model,
+                             std::shared_ptr<const Eigen::MatrixXd> sqrt_info = nullptr);
   bool Evaluate(const double* const* parameters, double* residuals,
                 double** jacobians) const override;
   /// S with S^T S = covariance^-1: residuals are S (h(x) - z).
-  const Eigen::MatrixXd& sqrtInformation() const { return sqrt_info_; }
+  const Eigen::MatrixXd& sqrtInformation() const { return *sqrt_info_; }
 
  private:
   std::shared_ptr<const MeasurementModel> model_;
-  Eigen::MatrixXd sqrt_info_;
+  std::shared_ptr<const Eigen::MatrixXd> sqrt_info_;
 };
 
 }  // namespace giocal

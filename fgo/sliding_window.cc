@@ -17,6 +17,7 @@
 namespace giocal {
 
 void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& value) {
+  ++version_;
   if (has(block.name)) throw std::invalid_argument("window variable '" + block.name + "' exists");
   if (value.size() != block.ambientSize()) {
     throw std::invalid_argument("window variable '" + block.name + "': value size");
@@ -25,6 +26,7 @@ void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& 
 }
 
 void SlidingWindow::removeVariable(const std::string& name) {
+  ++version_;
   vars_.erase(name);
   factors_.erase(std::remove_if(factors_.begin(), factors_.end(),
                                 [&](const Factor& f) {
@@ -35,6 +37,7 @@ void SlidingWindow::removeVariable(const std::string& name) {
 }
 
 Eigen::VectorXd& SlidingWindow::value(const std::string& name) {
+  ++version_;
   const auto it = vars_.find(name);
   if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
   return it->second.value;
@@ -53,16 +56,28 @@ const StateBlock& SlidingWindow::block(const std::string& name) const {
 }
 
 void SlidingWindow::setConstant(const std::string& name, bool constant) {
+  ++version_;
   value(name);
   vars_[name].constant = constant;
 }
 
 void SlidingWindow::holdComponents(const std::string& name, const std::vector<int>& components) {
+  ++version_;
   value(name);
   vars_[name].held = components;
 }
 
+void SlidingWindow::addFactor(Factor f) {
+  ++version_;
+  if (!f.sqrt_info) {
+    f.sqrt_info =
+        std::make_shared<const Eigen::MatrixXd>(whitener(f.model->covariance(), f.model->name()));
+  }
+  factors_.push_back(std::move(f));
+}
+
 int SlidingWindow::removeFactors(const std::string& tag) {
+  ++version_;
   const auto n = factors_.size();
   factors_.erase(std::remove_if(factors_.begin(), factors_.end(),
                                 [&](const Factor& f) { return f.tag == tag; }),
@@ -81,6 +96,7 @@ std::vector<std::string> SlidingWindow::estimatedVariables() const {
 }
 
 SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double function_tolerance) {
+  ++version_;
   ceres::Problem::Options po;
   po.manifold_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(po);
@@ -95,7 +111,7 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double funct
       }
     }
     ceres::LossFunction* loss = f.huber > 0.0 ? new ceres::HuberLoss(f.huber) : nullptr;
-    problem.AddResidualBlock(new ModelCostFunction(f.model), loss, ptrs);
+    problem.AddResidualBlock(new ModelCostFunction(f.model, f.sqrt_info), loss, ptrs);
   }
   for (const std::string& n : added) {
     Variable& v = vars_.at(n);
@@ -173,7 +189,7 @@ void SlidingWindow::forEachWhitenedFactor(const std::map<std::string, int>& offs
     for (size_t i = 0; i < segments.size(); ++i) {
       Jf.middleCols(segments[i].local, segments[i].size) = J[blocks[i]];
     }
-    const Eigen::MatrixXd S = whitener(f->model->covariance(), f->model->name());
+    const Eigen::MatrixXd& S = *f->sqrt_info;
     const Eigen::MatrixXd Jw = S * Jf;
     if (b) {
       const Eigen::VectorXd g = Jw.transpose() * (S * r);
@@ -204,27 +220,29 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
       &b);
 }
 
-Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
-  const std::vector<std::string> order = estimatedVariables();
-  std::vector<const Factor*> all;
-  for (const Factor& f : factors_) all.push_back(&f);
+struct SlidingWindow::HessianFactorization {
+  long version = -1;
   int n = 0;
-  const std::map<std::string, int> offset = tangentOffsets(order, &n);
-  std::vector<int> idx;
-  for (const std::string& name : names) {
-    const auto it = offset.find(name);
-    if (it == offset.end()) throw std::out_of_range("no estimated window variable '" + name + "'");
-    for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
-  }
-  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, static_cast<long>(idx.size()));
-  for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
+  std::map<std::string, int> offset;
+  Eigen::SparseMatrix<double> H;
+  Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  bool sparse_ok = false;
+};
+
+const SlidingWindow::HessianFactorization& SlidingWindow::factorization() const {
+  if (factorization_ && factorization_->version == version_) return *factorization_;
+  auto f = std::make_shared<HessianFactorization>();
+  f->version = version_;
+  std::vector<const Factor*> all;
+  for (const Factor& fac : factors_) all.push_back(&fac);
+  f->offset = tangentOffsets(estimatedVariables(), &f->n);
   // The window's Hessian is sparse (a chain of epochs plus the calibration and ambiguity columns):
   // a sparse factorization is ~10x cheaper than a dense one at window 30, and CHOLMOD's ordering
   // ~15x cheaper than Eigen's own AMD (measured, docs/results.md).
   // CHOLMOD reads the lower triangle only.
   std::vector<Eigen::Triplet<double>> triplets;
   forEachWhitenedFactor(
-      offset, all,
+      f->offset, all,
       [&](const std::vector<Segment>& segments, const Eigen::MatrixXd& Hf) {
         for (const Segment& u : segments) {
           for (const Segment& v : segments) {
@@ -238,16 +256,31 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
         }
       },
       nullptr);
-  Eigen::SparseMatrix<double> H(n, n);
-  H.setFromTriplets(triplets.begin(), triplets.end());
+  f->H.resize(f->n, f->n);
+  f->H.setFromTriplets(triplets.begin(), triplets.end());
+  f->ldlt.cholmod().print = 0;  // a singular H is handled below, not printed
+  f->ldlt.compute(f->H);
+  f->sparse_ok = f->ldlt.info() == Eigen::Success;
+  factorization_ = f;
+  return *factorization_;
+}
+
+Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
+  const HessianFactorization& f = factorization();
+  std::vector<int> idx;
+  for (const std::string& name : names) {
+    const auto it = f.offset.find(name);
+    if (it == f.offset.end())
+      throw std::out_of_range("no estimated window variable '" + name + "'");
+    for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
+  }
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(f.n, static_cast<long>(idx.size()));
+  for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
   Eigen::MatrixXd X;
-  Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-  ldlt.cholmod().print = 0;  // a singular H is handled below, not printed
-  ldlt.compute(H);
-  if (ldlt.info() == Eigen::Success) X = ldlt.solve(E);
-  if (ldlt.info() != Eigen::Success || !X.allFinite()) {
+  if (f.sparse_ok) X = f.ldlt.solve(E);
+  if (!f.sparse_ok || !X.allFinite()) {
     // A direction nothing observes: the dense pivoting LDLT still returns the observed part.
-    X = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>().ldlt().solve(E);
+    X = Eigen::MatrixXd(f.H).selfadjointView<Eigen::Lower>().ldlt().solve(E);
   }
   Eigen::MatrixXd C(idx.size(), idx.size());
   for (size_t r = 0; r < idx.size(); ++r) C.row(static_cast<long>(r)) = X.row(idx[r]);
@@ -255,6 +288,7 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
 }
 
 void SlidingWindow::marginalize(const std::vector<std::string>& names) {
+  ++version_;
   const std::set<std::string> drop(names.begin(), names.end());
   std::vector<const Factor*> touching;
   std::set<std::string> keep_set;
@@ -319,7 +353,7 @@ void SlidingWindow::marginalize(const std::vector<std::string>& names) {
                    "marginal_prior"};
       // Drop the old factors and variables, then add the new prior.
       for (const std::string& v : names) removeVariable(v);
-      factors_.push_back(std::move(prior));
+      addFactor(std::move(prior));
       return;
     }
   }

@@ -20,6 +20,8 @@ struct Factor {
   std::vector<std::string> vars;
   double huber = 0.0;  // > 0: Huber loss with this threshold on the whitened residual
   std::string tag;     // what it is, for finding it again ("dd_phase#12", "fix", ...)
+  // The model's whitener (its covariance is fixed): set when the factor enters a window.
+  std::shared_ptr<const Eigen::MatrixXd> sqrt_info;
 };
 
 class SlidingWindow {
@@ -36,7 +38,7 @@ class SlidingWindow {
   /// Components of a vector variable held at their value (p_b_m.z in planar motion).
   void holdComponents(const std::string& name, const std::vector<int>& components);
 
-  void addFactor(Factor f) { factors_.push_back(std::move(f)); }
+  void addFactor(Factor f);
   /// Removes the factors whose tag equals `tag`; returns how many.
   int removeFactors(const std::string& tag);
   const std::vector<Factor>& factors() const { return factors_; }
@@ -55,7 +57,8 @@ class SlidingWindow {
                  Eigen::MatrixXd& H, Eigen::VectorXd& b) const;
   /// The estimated variables that have factors, in a fixed order.
   std::vector<std::string> estimatedVariables() const;
-  /// Marginal covariance (tangent) of `names` from the whole window's Hessian.
+  /// Marginal covariance (tangent) of `names` from the whole window's Hessian. The factorization
+  /// is kept until the window changes: the covariances asked for at one state share it.
   Eigen::MatrixXd covariance(const std::vector<std::string>& names) const;
 
   /// Removes `names` and the factors on them, leaving one linear prior on their neighbours.
@@ -85,6 +88,10 @@ class SlidingWindow {
   };
   std::map<std::string, Variable> vars_;
   std::vector<Factor> factors_;
+  long version_ = 0;  // bumped by every change of variables, values or factors
+  struct HessianFactorization;
+  mutable std::shared_ptr<const HessianFactorization> factorization_;
+  const HessianFactorization& factorization() const;
 };
 
 }  // namespace giocal
