@@ -21,7 +21,7 @@ struct Factor {
   double huber = 0.0;  // > 0: Huber loss with this threshold on the whitened residual
   std::string tag;     // what it is, for finding it again ("dd_phase#12", "fix", ...)
   // The model's whitener (its covariance is fixed): set when the factor enters a window.
-  std::shared_ptr<const Eigen::MatrixXd> sqrt_info;
+  std::shared_ptr<const Eigen::MatrixXd> sqrt_info = nullptr;
 };
 
 class SlidingWindow {
