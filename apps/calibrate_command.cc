@@ -46,6 +46,7 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
       << std::setprecision(1) << run.data_duration_s << " s of data (" << std::setprecision(0)
       << (run.wall_time_s > 0 ? run.data_duration_s / run.wall_time_s : 0.0)
       << "x real time), files read in " << std::setprecision(3) << run.load_time_s << " s\n";
+  if (run.status != "ok") out << "  status: " << run.status << "\n";
   for (const std::string& w : run.warnings) out << "  warning: " << w << "\n";
   out.unsetf(std::ios::fixed);
 }

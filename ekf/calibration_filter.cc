@@ -54,7 +54,10 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
       motion_fed_t_(init.x.t),
       chi2_odometer_(chi2Quantile(options.chi2_probability, 6)) {
   // Navigation first, in the order of the IMU residual (p, theta, v, b_a, b_g), then calibration.
-  const auto blk = [](const Eigen::MatrixXd& P, int i, int n) { return P.block(i, i, n, n); };
+  // A copy, not a block: P may be a temporary converted from a fixed-size matrix.
+  const auto blk = [](const Eigen::MatrixXd& P, int i, int n) -> Eigen::MatrixXd {
+    return P.block(i, i, n, n);
+  };
   const Eigen::MatrixXd Pn = init.P_nav;
   Eigen::VectorXd q(4);
   quatToWxyz(init.x.q_n_b, q.data());

@@ -48,6 +48,7 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.max_odometer_gap_s = y.numberOr(s + "max_odometer_gap_s", o.max_odometer_gap_s, 1e-3, 60.0);
   o.output_rate_hz = y.numberOr(s + "output_rate_hz", o.output_rate_hz, 0.01, 1e4);
   o.max_imu_gap_s = y.numberOr(s + "max_imu_gap_s", o.max_imu_gap_s, 1e-3, 1e3);
+  o.max_imu_bridge_s = y.numberOr(s + "max_imu_bridge_s", o.max_imu_bridge_s, 1e-3, 1e3);
   o.divergence_sigma = y.numberOr(s + "divergence_sigma", o.divergence_sigma, 5.0, 1e6);
   const std::string i = s + "init.";
   o.init.static_speed = y.numberOr(i + "static_speed", o.init.static_speed, 0.0, 1.0);

@@ -72,6 +72,11 @@ struct CalibrationOptions {
   double max_odometer_gap_s = 0.5;  // a longer gap restarts the odometer interval [s]
   double output_rate_hz = 10.0;     // trajectory.csv rate [Hz]
   double max_imu_gap_s = 0.5;       // longer IMU gaps are reported (and bridged) [s]
+  // Longer IMU gaps end the stretch: the navigation state restarts from the data after the gap
+  // (static window or motion, heading from GNSS), the calibration is carried over with its
+  // covariance. Interpolating the IMU across a gap is a model error the preintegration noise
+  // does not cover (a 10 s gap left p_b_m.y 4.4 sigma off) [s].
+  double max_imu_bridge_s = 1.0;
   double max_base_offset = 0.5;     // "rtk" section: largest rover-base time-tag gap [s]
   double divergence_sigma = 50.0;   // DD code innovations this many sigma off: diverged
   OnlineOptions online;

@@ -136,6 +136,7 @@ std::vector<double> calibrationCsvRow(const CalibrationEstimate& e) {
 std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth) {
   nlohmann::ordered_json j;
   j["estimator"] = run.estimator;
+  j["status"] = run.status;
   if (run.latest) {
     const CalibrationEstimate& e = *run.latest;
     const Eigen::Quaterniond& q = e.calib.q_b_m;

@@ -51,6 +51,9 @@ struct CalibrationRun {
   std::map<std::string, double> timing;          // wall time of parts of the run [s]
   std::map<std::string, double> converged_at;    // parameter -> data time it converged [s]
   std::vector<std::string> warnings;             // bad data met on the way, divergence (capped)
+  // "ok", or "partial: <why>" when the data after a divergence or an IMU gap allowed no restart:
+  // the calibration is then the last one before it.
+  std::string status = "ok";
 
   double fixRate() const { return gnss_epochs ? double(fixed_epochs) / gnss_epochs : 0.0; }
   void count(Counter c, long n = 1) { counters[counterName(c)] += n; }

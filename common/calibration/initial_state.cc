@@ -8,6 +8,7 @@
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/rtk.h"
 #include "common/imu/static_alignment.h"
+#include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "common/math/so3.h"
 
@@ -63,6 +64,7 @@ std::vector<ImuSample> imuBetween(const std::vector<ImuSample>& imu, double t0, 
 }  // namespace
 
 Eigen::Matrix<double, 8, 8> priorCalibrationCovariance(const CalibrationPrior& prior) {
+  if (prior.covariance) return *prior.covariance;
   Eigen::Matrix<double, 8, 8> P = Eigen::Matrix<double, 8, 8>::Zero();
   P(calib_index::kSv, calib_index::kSv) = prior.sd_s_v * prior.sd_s_v;
   P(calib_index::kSw, calib_index::kSw) = prior.sd_s_w * prior.sd_s_w;
@@ -262,7 +264,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     return s;
   }
   if (good_epochs == 0) return fail("no RTK solution of the antenna (check base position and nav)");
-  return fail("the robot never drove " + std::to_string(io.min_distance) +
+  return fail("the robot never drove " + fixedText(io.min_distance, 1) +
               " m in a straight enough line with a good enough GNSS solution");
 }
 

@@ -26,6 +26,8 @@ const char* counterName(Counter c) {
       return "reinitializations";
     case Counter::kImuGaps:
       return "imu_gaps";
+    case Counter::kImuRestarts:
+      return "imu_restarts";
     case Counter::kLateSamples:
       return "late_samples_dropped";
     case Counter::kDuplicateSamples:

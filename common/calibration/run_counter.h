@@ -15,6 +15,7 @@ enum class Counter {
   kGnssWithoutBase,      // rover epochs with no base epoch near enough
   kReinitializations,    // restarts after divergence
   kImuGaps,              // IMU intervals longer than max_imu_gap_s
+  kImuRestarts,          // of those, longer than max_imu_bridge_s: navigation restarted
   kLateSamples,          // data older than the reorder buffer's lag: dropped
   kDuplicateSamples,     // a sample with the time of the previous one of its sensor: dropped
   kNonFiniteSamples,     // NaN or infinite values: dropped

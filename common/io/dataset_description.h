@@ -34,6 +34,9 @@ struct CalibrationPrior {
   double sd_s_w = 0.05;
   Eigen::Vector3d sd_p_b_m = Eigen::Vector3d::Constant(0.5);       // [m]
   Eigen::Vector3d sd_rpy_b_m = Eigen::Vector3d::Constant(0.0873);  // [rad]
+  // The full tangent covariance [s_v, s_w, p_b_m, theta_b_m] when the prior is an earlier
+  // estimate carried over (a restart after an IMU gap); it then replaces the sigmas above.
+  std::optional<Eigen::Matrix<double, 8, 8>> covariance;
 };
 
 struct DatasetDescription {

@@ -115,11 +115,15 @@ void Calibrator::release(Datum& d) {
         dropped(Counter::kDuplicateSamples, s.t, "IMU sample repeating the previous one's time");
         return;
       }
-      if (!buf_.imu.empty() && s.t - buf_.imu.back().t > options_.max_imu_gap_s) {
+      const double gap = buf_.imu.empty() ? 0.0 : s.t - buf_.imu.back().t;
+      if (gap > options_.max_imu_gap_s) {
         run_.count(Counter::kImuGaps);
-        run_.warn("IMU gap of " + timeText(s.t - buf_.imu.back().t) +
-                  " s after t=" + timeText(buf_.imu.back().t) +
-                  ": bridged by interpolation, the covariance grows with it");
+        if (gap > options_.max_imu_bridge_s) {
+          restartAfterGap(buf_.imu.back().t, s.t);
+        } else {
+          run_.warn("IMU gap of " + timeText(gap) + " s after t=" + timeText(buf_.imu.back().t) +
+                    ": bridged by interpolation, the covariance grows with it");
+        }
       }
       if (std::isnan(t_imu_first_)) t_imu_first_ = s.t;
       t_imu_last_ = s.t;

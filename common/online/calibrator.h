@@ -88,6 +88,9 @@ class Calibrator {
   void trim();
   void say(double t, const std::string& text);
   void dropped(Counter c, double t, const std::string& what);
+  /// An IMU gap [t0, t1] too long to bridge: events before it are finished, the estimator ends,
+  /// and initialization starts again at t1 with the calibration (and covariance) carried over.
+  void restartAfterGap(double t0, double t1);
   const ObsEpoch* nearestBase(double t) const;
   double rel(double t) const { return t - t_first_; }
 
@@ -113,6 +116,7 @@ class Calibrator {
   std::string why_not_initialized_;
   InitialRtkCache init_cache_;           // RTK solutions between initialization attempts
   double skip_rover_until_ = -INFINITY;  // the epoch that diverged is not processed again
+  double flush_until_ = -INFINITY;       // events up to here are processed whatever follows
   double t_imu_first_ = NAN, t_imu_last_ = NAN, t_rover_first_ = NAN, t_rover_last_ = NAN;
   double last_rover_t_ = -INFINITY;
   LatencyHistogram latency_;

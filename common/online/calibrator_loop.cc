@@ -37,7 +37,7 @@ void dropBefore(std::vector<T>& v, double t) {
 }  // namespace
 
 bool Calibrator::ready(double t) const {
-  if (finishing_) return true;
+  if (finishing_ || t <= flush_until_) return true;
   // Events read ahead: the motion detectors' half window, the base epoch nearest in time.
   const double look =
       std::max(0.5 * options_.models.motion.window_s, options_.max_base_offset) + 0.05;
@@ -84,7 +84,8 @@ bool Calibrator::tryInitialize() {
     }
     return false;
   }
-  if (run_.initialization.empty()) {
+  const bool again = !run_.initialization.empty();
+  if (!again) {
     run_.t_initialized = init->x.t;
     run_.initialization = {{"static_window_s", init->static_window_s},
                            {"heading_baseline_m", init->heading_baseline_m},
@@ -93,10 +94,11 @@ bool Calibrator::tryInitialize() {
   }
   core_ = factory_(buf_, *orbits_, *init);
   init_cache_ = {};
+  why_not_initialized_.clear();
   diverged_ = false;
-  say(init->x.t, std::string(run_.counter(Counter::kReinitializations) ? "re-" : "") +
-                     "initialized: heading from a " + fixedText(init->heading_baseline_m, 1) +
-                     " m baseline, static window " + fixedText(init->static_window_s, 1) + " s");
+  say(init->x.t, std::string(again ? "re-" : "") + "initialized: heading from a " +
+                     fixedText(init->heading_baseline_m, 1) + " m baseline, static window " +
+                     fixedText(init->static_window_s, 1) + " s");
   return true;
 }
 
@@ -240,21 +242,49 @@ void Calibrator::trim() {
   }
 }
 
+void Calibrator::restartAfterGap(double t0, double t1) {
+  run_.count(Counter::kImuRestarts);
+  run_.warn("IMU gap of " + timeText(t1 - t0) + " s after t=" + timeText(t0) +
+            ": longer than calibration.max_imu_bridge_s; the navigation state restarts from the "
+            "data after it, the calibration is carried over with its covariance");
+  if (core_) {
+    flush_until_ = t0;  // the events the IMU covers are complete: finish them
+    process();
+    flush_until_ = -INFINITY;
+  }
+  if (core_) {
+    const CalibrationEstimate e = core_->calibration();
+    if (!run_.latest || run_.latest->t < core_->time()) onEstimate(e);
+    dataset_ = original_;
+    dataset_.initial_calibration.mean = e.calib;
+    dataset_.initial_calibration.covariance = e.cov;
+    core_.reset();
+    say(t0, "IMU gap of " + fixedText(t1 - t0, 1) + " s: restarting after it");
+  }
+  t_from_ = std::max(t_from_, t1);
+  last_init_try_ = -INFINITY;
+  init_cache_ = {};
+}
+
 void Calibrator::finish() {
   BusyTimer busy(busy_s_);
   finishing_ = true;
   reorder_.release([&](double, Datum& x) { release(x); }, true);
   process();
-  if (!core_) {
+  const std::string why = why_not_initialized_.empty()
+                              ? std::string("no rover epoch with IMU and odometer data around it")
+                              : why_not_initialized_;
+  if (!core_ && run_.latest) {
+    run_.warn("no re-initialization possible after t=" + timeText(t_from_) + ": " + why);
+    run_.status = "partial: " + std::string(diverged_ ? "the filter diverged" : "an IMU gap") +
+                  " before t=" + timeText(t_from_) +
+                  " and the data after it allow no new initial state (" + why +
+                  "); the calibration is the last one before it";
+  } else if (!core_) {
     if (!diverged_) {
-      throw std::runtime_error(
-          "could not initialize: " +
-          (why_not_initialized_.empty()
-               ? std::string("no rover epoch with IMU and odometer data around it")
-               : why_not_initialized_));
+      throw std::runtime_error("could not initialize: " + why);
     }
-    run_.warn("no re-initialization possible after t=" + timeText(t_from_) + ": " +
-              why_not_initialized_);
+    run_.warn("no re-initialization possible after t=" + timeText(t_from_) + ": " + why);
   }
   if (core_ && (!run_.latest || run_.latest->t < core_->time())) onEstimate(core_->calibration());
   if (run_.latest) {
