@@ -32,4 +32,10 @@ bool number(const std::string& text, double blank, double& out) {
   return end == t.c_str() + t.size() && std::isfinite(out);
 }
 
+bool integer(double v, int min, int max, int& out) {
+  if (!std::isfinite(v) || v < min || v > max || v != std::floor(v)) return false;
+  out = static_cast<int>(v);
+  return true;
+}
+
 }  // namespace giocal::rinex

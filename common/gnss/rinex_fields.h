@@ -15,4 +15,8 @@ std::string trim(const std::string& s);
 /// number returns false.
 bool number(const std::string& text, double blank, double& out);
 
+/// v as an int when it is finite, a whole number and within [min, max]; false otherwise (a file
+/// value such as 2e24 must never reach an int conversion).
+bool integer(double v, int min, int max, int& out);
+
 }  // namespace giocal::rinex

@@ -1,6 +1,7 @@
 #include "common/gnss/rinex_nav.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "common/gnss/rinex_fields.h"
@@ -35,6 +36,16 @@ double num(LineReader& r, const std::string& line, int col, int width, const cha
   return v;
 }
 
+int integer(LineReader& r, const std::string& line, int col, int width, const char* what, int min,
+            int max) {
+  int v = 0;
+  if (!rinex::integer(num(r, line, col, width, what), min, max, v)) {
+    r.fail(std::string("bad ") + what + ": '" + rinex::trim(field(line, col, width)) +
+           "' (a whole number from " + std::to_string(min) + " to " + std::to_string(max) + ")");
+  }
+  return v;
+}
+
 // Number of lines in a record (including its first line) by system, RINEX 3.
 int recordLines(char sys) {
   switch (sys) {
@@ -46,8 +57,14 @@ int recordLines(char sys) {
   }
 }
 
-// Fills the orbit from the 28 numbers after the clock line (broadcast orbit lines 1-7).
-void fillOrbit(Ephemeris& e, const std::array<double, 28>& o, char sys) {
+// Fills the orbit from the 28 numbers after the clock line (broadcast orbit lines 1-7); returns
+// what is wrong with them, empty when nothing is.
+std::string fillOrbit(Ephemeris& e, const std::array<double, 28>& o, char sys) {
+  int week_number = 0, health = 0, source = 0;
+  if (!rinex::integer(o[18], 0, 9999, week_number)) return "week outside 0-9999";
+  if (!(o[8] >= 0.0 && o[8] <= 604800.0)) return "time of ephemeris outside 0-604800 s";
+  if (!rinex::integer(o[21], 0, 1 << 20, health)) return "health is not a whole number >= 0";
+  if (sys == 'E' && !rinex::integer(o[17], 0, 65535, source)) return "bad Galileo data source";
   e.iode = o[0];
   e.crs = o[1];
   e.delta_n = o[2];
@@ -65,12 +82,12 @@ void fillOrbit(Ephemeris& e, const std::array<double, 28>& o, char sys) {
   e.omega = o[14];
   e.omega_dot = o[15];
   e.idot = o[16];
-  const double week = o[18];
+  const int week = week_number;
   e.accuracy = o[20];
-  e.health = static_cast<int>(o[21]);
+  e.health = health;
   e.tgd = o[22];
   if (sys == 'E') {
-    e.data_source = static_cast<int>(o[17]);
+    e.data_source = source;
     e.tgd = o[23];   // BGD E5b/E1, the one an E1 (I/NAV) single-frequency user applies
     e.tgd2 = o[22];  // BGD E5a/E1
   } else if (sys == 'C') {
@@ -80,15 +97,15 @@ void fillOrbit(Ephemeris& e, const std::array<double, 28>& o, char sys) {
   }
   if (sys == 'C') {
     // BDT week 0 began at GPS week 1356 (+14 s); toe is kept in GPS seconds.
-    e.toe = gpsSecondsFromWeekTime({static_cast<int>(week) + 1356, toe_sow}) + 14.0;
+    e.toe = gpsSecondsFromWeekTime({week + 1356, toe_sow}) + 14.0;
   } else {
     // RINEX 3 gives GPS, QZSS and Galileo weeks on the continuous GPS count; RINEX 2 files written
     // with a week modulo 1024 are brought next to the clock time below.
-    e.toe = gpsSecondsFromWeekTime({static_cast<int>(week), toe_sow});
+    e.toe = gpsSecondsFromWeekTime({week, toe_sow});
   }
   // Keep toe within half a week of toc (week rollovers and mod-1024 weeks).
-  while (e.toe - e.toc > kSecondsPerWeek / 2) e.toe -= kSecondsPerWeek;
-  while (e.toc - e.toe > kSecondsPerWeek / 2) e.toe += kSecondsPerWeek;
+  e.toe -= kSecondsPerWeek * std::round((e.toe - e.toc) / kSecondsPerWeek);
+  return "";
 }
 
 }  // namespace
@@ -140,11 +157,11 @@ NavData readRinexNav(const std::string& path) {
     if (v3) {
       if (!parseSatId(field(line, 1, 3), sat))
         r.fail("bad satellite id '" + field(line, 1, 3) + "'");
-      toc.year = static_cast<int>(num(r, line, 5, 4, "year"));
-      toc.month = static_cast<int>(num(r, line, 10, 2, "month"));
-      toc.day = static_cast<int>(num(r, line, 13, 2, "day"));
-      toc.hour = static_cast<int>(num(r, line, 16, 2, "hour"));
-      toc.minute = static_cast<int>(num(r, line, 19, 2, "minute"));
+      toc.year = integer(r, line, 5, 4, "year", 1980, 2200);
+      toc.month = integer(r, line, 10, 2, "month", 1, 12);
+      toc.day = integer(r, line, 13, 2, "day", 1, 31);
+      toc.hour = integer(r, line, 16, 2, "hour", 0, 24);
+      toc.minute = integer(r, line, 19, 2, "minute", 0, 59);
       toc.second = num(r, line, 22, 2, "second");
       clock_col = 24;
     } else {
@@ -152,12 +169,12 @@ NavData readRinexNav(const std::string& path) {
       if (!parseSatId(std::string(1, file_sys) + (id[0] == ' ' ? "0" + id.substr(1) : id), sat)) {
         r.fail("bad satellite number '" + id + "'");
       }
-      const int yy = static_cast<int>(num(r, line, 4, 2, "year"));
+      const int yy = integer(r, line, 4, 2, "year", 0, 99);
       toc.year = yy < 80 ? 2000 + yy : 1900 + yy;
-      toc.month = static_cast<int>(num(r, line, 7, 2, "month"));
-      toc.day = static_cast<int>(num(r, line, 10, 2, "day"));
-      toc.hour = static_cast<int>(num(r, line, 13, 2, "hour"));
-      toc.minute = static_cast<int>(num(r, line, 16, 2, "minute"));
+      toc.month = integer(r, line, 7, 2, "month", 1, 12);
+      toc.day = integer(r, line, 10, 2, "day", 1, 31);
+      toc.hour = integer(r, line, 13, 2, "hour", 0, 24);
+      toc.minute = integer(r, line, 16, 2, "minute", 0, 59);
       toc.second = num(r, line, 18, 5, "second");
       clock_col = 23;
     }
@@ -190,7 +207,8 @@ NavData readRinexNav(const std::string& path) {
       continue;
     }
     e.toc = gpsSecondsFromCalendar(toc) + (sat.sys == GnssSystem::kBeidou ? 14.0 : 0.0);
-    fillOrbit(e, orbit, sys);
+    const std::string bad = fillOrbit(e, orbit, sys);
+    if (!bad.empty()) throw DataError(path, first_line, "record of " + sat.str() + ": " + bad);
     if (!(e.sqrt_a > 1000.0) || e.e < 0.0 || e.e >= 1.0) {
       throw DataError(path, first_line, "implausible orbit for " + sat.str() + " (sqrt(A), e)");
     }

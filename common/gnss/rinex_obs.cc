@@ -36,6 +36,16 @@ class Reader {
     }
     return v;
   }
+  /// A whole number within [min, max] (fields that become ints: dates, counts, flags).
+  int integer(const std::string& line, int col, int width, const std::string& what, int min,
+              int max) {
+    int v = 0;
+    if (!rinex::integer(num(line, col, width, what), min, max, v)) {
+      fail("bad " + what + ": '" + rinex::trim(field(line, col, width)) +
+           "' (a whole number from " + std::to_string(min) + " to " + std::to_string(max) + ")");
+    }
+    return v;
+  }
   long lineNo() const { return line_no_; }
 
  private:
@@ -104,19 +114,19 @@ void readValue(Reader& r, const std::string& line, int col, double& value, int& 
 double epochTime(Reader& r, const std::string& line, bool v3, double time_offset) {
   CalendarTime c;
   if (v3) {
-    c.year = static_cast<int>(r.num(line, 3, 4, "epoch year"));
-    c.month = static_cast<int>(r.num(line, 8, 2, "epoch month"));
-    c.day = static_cast<int>(r.num(line, 11, 2, "epoch day"));
-    c.hour = static_cast<int>(r.num(line, 14, 2, "epoch hour"));
-    c.minute = static_cast<int>(r.num(line, 17, 2, "epoch minute"));
+    c.year = r.integer(line, 3, 4, "epoch year", 1980, 2200);
+    c.month = r.integer(line, 8, 2, "epoch month", 1, 12);
+    c.day = r.integer(line, 11, 2, "epoch day", 1, 31);
+    c.hour = r.integer(line, 14, 2, "epoch hour", 0, 24);
+    c.minute = r.integer(line, 17, 2, "epoch minute", 0, 59);
     c.second = r.num(line, 19, 11, "epoch second");
   } else {
-    const int yy = static_cast<int>(r.num(line, 2, 2, "epoch year"));
+    const int yy = r.integer(line, 2, 2, "epoch year", 0, 99);
     c.year = yy < 80 ? 2000 + yy : 1900 + yy;
-    c.month = static_cast<int>(r.num(line, 5, 2, "epoch month"));
-    c.day = static_cast<int>(r.num(line, 8, 2, "epoch day"));
-    c.hour = static_cast<int>(r.num(line, 11, 2, "epoch hour"));
-    c.minute = static_cast<int>(r.num(line, 14, 2, "epoch minute"));
+    c.month = r.integer(line, 5, 2, "epoch month", 1, 12);
+    c.day = r.integer(line, 8, 2, "epoch day", 1, 31);
+    c.hour = r.integer(line, 11, 2, "epoch hour", 0, 24);
+    c.minute = r.integer(line, 14, 2, "epoch minute", 0, 59);
     c.second = r.num(line, 16, 11, "epoch second");
   }
   if (c.month < 1 || c.month > 12 || c.day < 1 || c.day > 31 || c.hour > 23 || c.minute > 59 ||
@@ -173,14 +183,14 @@ RinexObsReader::RinexObsReader(const std::string& path) : s_(std::make_unique<St
       h.interval = r.num(line, 1, 10, "interval");
     } else if (lab == "# / TYPES OF OBSERV") {
       if (rinex::trim(field(line, 1, 6)).size())
-        v2_count = static_cast<int>(r.num(line, 1, 6, "number of types"));
+        v2_count = r.integer(line, 1, 6, "number of types", 0, 999);
       for (int k = 0; k < 9 && static_cast<int>(v2_types.size()) < v2_count; ++k) {
         v2_types.push_back(rinex::trim(field(line, 11 + 6 * k, 2)));
       }
     } else if (lab == "SYS / # / OBS TYPES") {
       if (field(line, 1, 1)[0] != ' ') {
         pending_sys = field(line, 1, 1)[0];
-        pending_count = static_cast<int>(r.num(line, 4, 3, "number of observation types"));
+        pending_count = r.integer(line, 4, 3, "number of observation types", 0, 999);
         h.obs_types[pending_sys].clear();
       }
       if (!pending_sys) r.fail("observation types continuation without a system");
@@ -226,8 +236,8 @@ bool RinexObsReader::next(ObsEpoch& out) {
     if (rinex::trim(line).empty()) continue;
     if (v3 && line[0] != '>') r.fail("expected an epoch record starting with '>'");
     if (line.size() < (v3 ? 35u : 32u)) r.fail("epoch line is truncated");
-    const int flag = static_cast<int>(r.num(line, v3 ? 32 : 29, 1, "epoch flag"));
-    const int nsat = static_cast<int>(r.num(line, v3 ? 33 : 30, 3, "number of satellites"));
+    const int flag = r.integer(line, v3 ? 32 : 29, 1, "epoch flag", 0, 6);
+    const int nsat = r.integer(line, v3 ? 33 : 30, 3, "number of satellites", 0, 999);
     if (flag < 0 || flag > 6 || nsat < 0) r.fail("bad epoch flag or satellite count");
     if (flag >= 2 && flag <= 6) {
       // Special records (2-5: header lines; 6: cycle-slip records) are skipped.

@@ -176,5 +176,54 @@ TEST(RinexNav, TruncatedAndMalformedFilesAreReported) {
   expectFileLineError([&] { readRinexNav(obs_as_nav); }, obs_as_nav, "not a RINEX navigation");
 }
 
+/// `text` with the `width` characters at 0-based `pos` replaced by `value` (right-aligned).
+std::string withField(std::string text, size_t pos, size_t width, const std::string& value) {
+  text.replace(pos, width, std::string(width - value.size(), ' ') + value);
+  return text;
+}
+
+TEST(RinexNav, OutOfRangeNumbersAreErrorsNotIntegerOverflowsOrHangs) {
+  // Values that reached int conversions (undefined behaviour) or made the week fold loop for
+  // ever before: a toe of 1e99, a week of 2e24, a health of 1.3e103, a year of 9e99.
+  test::TempDir dir;
+  const std::string text = slurp(kMosaic + "base.nav");
+  const size_t rec = text.find("G05 2024");
+  const size_t l3 = text.find('\n', text.find('\n', text.find('\n', rec) + 1) + 1) + 1;  // toe
+  const size_t l5 = text.find('\n', text.find('\n', l3) + 1) + 1;                        // week
+  const size_t l6 = text.find('\n', l5) + 1;                                             // health
+  struct Case {
+    std::string text, what;
+  } cases[] = {
+      {withField(text, l3 + 4, 19, "1.000000000000E+99"), "time of ephemeris"},
+      {withField(text, l5 + 4 + 2 * 19, 19, "2.000000000000E+24"), "week"},
+      {withField(text, l6 + 4 + 19, 19, "1.30000000000E+103"), "health"},
+      {withField(text, rec + 4, 4, "9e99"), "bad year"},
+  };
+  int k = 0;
+  for (const Case& c : cases) {
+    const std::string p = dir.write("bad" + std::to_string(k++) + ".nav", c.text);
+    expectFileLineError([&] { readRinexNav(p); }, p, c.what);
+  }
+}
+
+TEST(RinexObs, OutOfRangeCountsAndDatesAreErrors) {
+  test::TempDir dir;
+  const std::string text = slurp(kMosaic + "rover.obs");
+  const size_t epoch = text.find("\n> 2024") + 1;
+  const size_t types = text.find("G   17 X1");
+  struct Case {
+    std::string text, what;
+  } cases[] = {
+      {withField(text, epoch + 2, 4, "9e99"), "bad epoch year"},
+      {withField(text, epoch + 32, 3, "9e9"), "bad number of satellites"},
+      {withField(text, types + 3, 3, "9e9"), "bad number of observation types"},
+  };
+  int k = 0;
+  for (const Case& c : cases) {
+    const std::string p = dir.write("bad" + std::to_string(k++) + ".obs", c.text);
+    expectFileLineError([&] { readRinexObs(p); }, p, c.what);
+  }
+}
+
 }  // namespace
 }  // namespace giocal
