@@ -1,5 +1,7 @@
 #include "common/io/yaml_fields.h"
 
+#include <yaml-cpp/depthguard.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -25,15 +27,34 @@ size_t editDistance(const std::string& a, const std::string& b) {
 }
 
 /// Dotted keys of the leaves (scalars and lists) under `node`, with their nodes.
-void leaves(const YAML::Node& node, const std::string& prefix,
+void leaves(const std::string& path, const YAML::Node& node, const std::string& prefix,
             std::vector<std::pair<std::string, YAML::Node>>& out) {
   if (!node.IsMap()) {
     out.push_back({prefix, node});
     return;
   }
   for (const auto& kv : node) {
-    const std::string key = (prefix.empty() ? "" : prefix + ".") + kv.first.as<std::string>();
-    leaves(kv.second, key, out);
+    if (!kv.first.IsScalar()) {
+      const long line = kv.first.Mark().line >= 0 ? kv.first.Mark().line + 1 : 0;
+      throw DataError(path, line,
+                      "a key under '" + (prefix.empty() ? std::string("the top level") : prefix) +
+                          "' is a list or a map; keys must be plain names");
+    }
+    const std::string key = (prefix.empty() ? "" : prefix + ".") + kv.first.Scalar();
+    leaves(path, kv.second, key, out);
+  }
+}
+
+const char* kindOf(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null:
+      return "empty";
+    case YAML::NodeType::Scalar:
+      return "a single value";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    default:
+      return "not a map";
   }
 }
 
@@ -51,10 +72,21 @@ YamlFields::YamlFields(const std::string& path) : path_(path) {
     root_ = YAML::LoadFile(path);
   } catch (const YAML::BadFile&) {
     throw DataError(path, 0, "cannot open file");
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's own message for this is "bad file", which says nothing.
+    throw DataError(path, e.mark.line + 1,
+                    "YAML nested too deeply (giocal's files are at most a few levels deep)");
   } catch (const YAML::Exception& e) {
     throw DataError(path, e.mark.line + 1, "YAML syntax error: " + e.msg);
   }
-  if (!root_.IsMap()) throw DataError(path, 1, "expected a YAML mapping at the top level");
+  if (!root_.IsMap()) {
+    throw DataError(path, lineOf(root_) > 0 ? lineOf(root_) : 1,
+                    std::string("the document is ") + kindOf(root_) +
+                        "; expected a map of keys (key: value) at the top level");
+  }
+  // Keys that are lists or maps would surface later as a bad conversion inside yaml-cpp.
+  std::vector<std::pair<std::string, YAML::Node>> keys;
+  leaves(path, root_, "", keys);
 }
 
 YamlFields::YamlFields(const std::string& path, YAML::Node root) : path_(path), root_(root) {}
@@ -176,7 +208,7 @@ Eigen::Vector3d YamlFields::vector3(const std::string& key, double min, double m
 
 void YamlFields::rejectUnknownKeys(const std::vector<std::string>& other_sections) const {
   std::vector<std::pair<std::string, YAML::Node>> keys;
-  leaves(root_, "", keys);
+  leaves(path_, root_, "", keys);
   for (const auto& [key, node] : keys) {
     if (asked_.count(key)) continue;
     const std::string section = key.substr(0, key.find('.'));

@@ -74,6 +74,12 @@ TEST(DatasetDescription, MissingKeyAndBadValuesNameTheLine) {
   expectError(replace("p_b_g: [0.1, -0.2, 0.5]", "p_b_g: [0.1, -0.2]"), "list of 3 finite numbers");
   expectError(replace("base_position_ecef: [", "base_position_ecef: [1, 2, 3] #"), "ECEF");
   expectError(replace("files:", "files: [\n"), "YAML syntax error");
+  expectError(good + "deep: " + std::string(5000, '[') + std::string(5000, ']') + "\n",
+              "YAML nested too deeply");
+  expectError("- 1\n- 2\n", "the document is a list; expected a map of keys");
+  expectError("just a sentence\n", "the document is a single value; expected a map of keys");
+  expectError("", "the document is empty; expected a map of keys");
+  expectError(good + "[a, b]: 3\n", "a key under 'the top level' is a list or a map");
 }
 
 TEST(TruthCalibration, RoundTripAndConsistency) {
