@@ -66,10 +66,13 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
       }
     }
   }
-  LiveRunWriter writer(job.out, job.estimator, log);
+  replay.stop = job.stop;
+  OutputSet outputs(job.out);
+  LiveRunWriter writer(outputs, "", job.estimator, log);
   const CalibrationRun run = replayFolder(job.data, replay, &writer);
   const std::optional<TruthCalibration> truth = readFolderTruth(job.data);
-  writer.commit(run, truth ? &truth->calib : nullptr);
+  writer.finish(run, truth ? &truth->calib : nullptr);
+  outputs.commit();
   printCalibrationSummary(run, truth ? &truth->calib : nullptr, log);
   log << "  outputs: " << job.out << "/{calibration.csv, trajectory.csv, summary.json}\n";
   return run;

@@ -5,12 +5,14 @@
 #include <string>
 
 #include "common/calibration/calibration_run.h"
+#include "common/io/stop_request.h"
 
 namespace giocal {
 
 struct CalibrateJob {
   std::string data, estimator = "ekf", config, out;
   bool overwrite = false;
+  const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };
 
 /// Runs one estimator on a dataset folder, writes the outputs, prints a summary. Refuses to

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "apps/live_run_writer.h"
-#include "common/io/atomic_file.h"
 #include "common/math/rotation.h"
 #include "replay/config.h"
 #include "replay/replay.h"
@@ -37,15 +36,17 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   const GiocalConfig config = readGiocalConfig(job.config);
   replay.options = config.calibration;
   replay.fgo_options = config.fgo;
+  replay.stop = job.stop;
+  OutputSet outputs(out);
   const std::optional<TruthCalibration> truth_file = readFolderTruth(job.data);
   const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
   CalibrationRun runs[2];
   const char* estimators[2] = {"ekf", "fgo"};
   for (int a = 0; a < 2; ++a) {
     replay.estimator = estimators[a];
-    LiveRunWriter writer(out + "/" + estimators[a], estimators[a], log);
+    LiveRunWriter writer(outputs, std::string(estimators[a]) + "/", estimators[a], log);
     runs[a] = replayFolder(job.data, replay, &writer);
-    writer.commit(runs[a], truth);
+    writer.finish(runs[a], truth);
   }
 
   std::vector<Row> rows;
@@ -116,9 +117,8 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   for (const CalibrationRun& r : runs) {
     for (const std::string& w : r.warnings) log << "  " << r.estimator << " warning: " << w << "\n";
   }
-  AtomicFile f(out + "/compare.csv");
-  f.stream() << csv.str();
-  f.commit();
+  outputs.open("compare.csv") << csv.str();
+  outputs.commit();
   log << "outputs: " << out << "/{compare.csv, ekf/, fgo/}\n";
   log.unsetf(std::ios::fixed);
 }

@@ -5,11 +5,14 @@
 #include <iosfwd>
 #include <string>
 
+#include "common/io/stop_request.h"
+
 namespace giocal {
 
 struct CompareJob {
   std::string data, config, out;  // out empty: <data>/giocal_compare
   bool overwrite = false;
+  const StopRequest* stop = nullptr;  // Ctrl-C: the runs stop and nothing is written
 };
 
 /// Runs the EKF and the factor graph, writes each one's outputs into <out>/ekf and <out>/fgo and

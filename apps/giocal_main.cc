@@ -8,6 +8,7 @@
 #include "apps/calibrate_command.h"
 #include "apps/check_command.h"
 #include "apps/compare_command.h"
+#include "apps/interrupt_watch.h"
 #include "apps/simulate_command.h"
 #include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
@@ -49,8 +50,9 @@ int runSimulateCommand(int argc, char** argv) {
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, opts), vm);
   po::notify(vm);
+  const giocal::InterruptWatch interrupts;
   giocal::runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
-                      vm["seed"].as<std::uint64_t>(), std::cout);
+                      vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
   return 0;
 }
 
@@ -78,6 +80,8 @@ int runRtkCommand(int argc, char** argv) {
     job.base_pos = giocal::parseBasePosition(vm["base-pos"].as<std::string>());
   if (vm.count("config"))
     job.options = giocal::readGiocalConfig(vm["config"].as<std::string>()).rtk;
+  const giocal::InterruptWatch interrupts;
+  job.stop = interrupts.stop();
   const giocal::RtkSummary s = giocal::runRtk(job);
   std::cout << "giocal rtk: " << s.epochs << " epochs, " << s.fixed << " fixed ("
             << (s.epochs ? 100.0 * s.fixed / s.epochs : 0.0) << " %), " << s.floats << " float, "
@@ -102,6 +106,8 @@ int runCalibrateCommand(int argc, char** argv) {
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;
+  const giocal::InterruptWatch interrupts;
+  job.stop = interrupts.stop();
   giocal::runCalibrate(job, std::cout);
   return 0;
 }
@@ -120,6 +126,8 @@ int runCompareCommand(int argc, char** argv) {
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;
+  const giocal::InterruptWatch interrupts;
+  job.stop = interrupts.stop();
   giocal::runCompare(job, std::cout);
   return 0;
 }
@@ -140,6 +148,10 @@ int main(int argc, char** argv) {
     if (command == "compare") return runCompareCommand(argc - 1, argv + 1);
     std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
     return 2;
+  } catch (const giocal::Interrupted& e) {
+    std::cerr << "giocal " << command << ": " << e.what()
+              << "; nothing written (earlier outputs, if any, are unchanged)\n";
+    return 128 + e.signal();
   } catch (const giocal::DataError& e) {
     std::cerr << "giocal " << command << ": " << e.what() << "\n";
     return 1;

@@ -12,8 +12,8 @@ namespace giocal {
 
 class LiveRunWriter : public RunWriter {
  public:
-  LiveRunWriter(const std::string& folder, std::string label, std::ostream& log)
-      : RunWriter(folder), label_(std::move(label)), log_(log) {}
+  LiveRunWriter(OutputSet& set, const std::string& prefix, std::string label, std::ostream& log)
+      : RunWriter(set, prefix), label_(std::move(label)), log_(log) {}
   void event(double t, const std::string& text) override {
     const auto flags = log_.flags();
     log_ << "  " << label_ << " t=+" << std::fixed << std::setprecision(1) << t << " s: " << text

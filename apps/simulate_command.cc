@@ -5,12 +5,13 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "common/io/output_set.h"
 #include "sim/simulator.h"
 
 namespace giocal {
 
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
-                 std::ostream& log) {
+                 std::ostream& log, const StopRequest* stop) {
   const sim::SimConfig cfg = sim::readSimConfig(config);
   for (const char* f : {"dataset.yaml", "imu.csv", "odom.csv", "truth.csv", "truth_calib.yaml"}) {
     if (std::filesystem::exists(std::filesystem::path(out) / f)) {
@@ -20,7 +21,13 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
   }
   const auto start = std::chrono::steady_clock::now();
   const sim::SimulatedLogs logs = sim::simulate(cfg, seed);
-  sim::writeDataset(logs, out);
+  checkStop(stop);
+  // The dataset appears whole or not at all; dataset.yaml, which names the others, goes last.
+  OutputSet outputs(out);
+  outputs.stagedPath("dataset.yaml", true);
+  sim::writeDataset(logs, outputs.staging());
+  checkStop(stop);
+  outputs.commit();
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   log << "simulated '" << cfg.name << "' (seed " << seed

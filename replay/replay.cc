@@ -22,9 +22,11 @@ struct Stream {
   long count = 0;
 };
 
-/// Hands every stream's items to the calibrator, oldest first.
-void merge(std::vector<Stream>& streams) {
+/// Hands every stream's items to the calibrator, oldest first, until they end or a stop is
+/// requested (Interrupted).
+void merge(std::vector<Stream>& streams, const StopRequest* stop) {
   while (true) {
+    checkStop(stop);
     Stream* next = nullptr;
     for (Stream& s : streams) {
       if (s.t < INFINITY && (!next || s.t < next->t)) next = &s;
@@ -107,7 +109,7 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
       readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
   streams.push_back(
       readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
-  merge(streams);
+  merge(streams, job.stop);
   if (streams[0].count < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (streams[1].count == 0) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
   if (streams[2].count == 0) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
@@ -135,7 +137,7 @@ CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, R
       vectorStream<ObsEpoch>(in.rover.epochs, [&c](const ObsEpoch& e) { c.addRover(e); }));
   streams.push_back(
       vectorStream<ObsEpoch>(in.base.epochs, [&c](const ObsEpoch& e) { c.addBase(e); }));
-  merge(streams);
+  merge(streams, job.stop);
   c.finish();
   return c.run();
 }

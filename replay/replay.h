@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/calibration/calibration_inputs.h"
+#include "common/io/stop_request.h"
 #include "common/online/calibrator.h"
 #include "fgo/fgo_options.h"
 
@@ -15,6 +16,7 @@ struct ReplayJob {
   std::string estimator = "ekf";
   CalibrationOptions options;
   FgoOptions fgo_options;
+  const StopRequest* stop = nullptr;  // when requested, the replay throws Interrupted
 };
 
 /// Reads the folder's files sample by sample while calibrating (memory does not grow with the

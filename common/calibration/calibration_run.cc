@@ -133,10 +133,12 @@ std::vector<double> calibrationCsvRow(const CalibrationEstimate& e) {
           sd[7]};
 }
 
-std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth) {
+std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth,
+                        const std::map<std::string, std::uintmax_t>& files) {
   nlohmann::ordered_json j;
   j["estimator"] = run.estimator;
   j["status"] = run.status;
+  if (!files.empty()) j["files"] = files;
   if (run.latest) {
     const CalibrationEstimate& e = *run.latest;
     const Eigen::Quaterniond& q = e.calib.q_b_m;

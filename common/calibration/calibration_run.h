@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -77,8 +78,10 @@ struct CalibrationError {
 CalibrationError calibrationError(const CalibrationEstimate& estimate,
                                   const OdometerCalibration& truth);
 
-/// summary.json of a run (the brief's keys and giocal's, see the README), `truth` when known.
-std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth);
+/// summary.json of a run (the brief's keys and giocal's, see the README), `truth` when known;
+/// `files` (name -> bytes) are the other files of its output set (io/output_set.h).
+std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* truth,
+                        const std::map<std::string, std::uintmax_t>& files = {});
 
 /// The calibration.csv header and the row of one estimate.
 const std::vector<std::string>& calibrationCsvHeader();

@@ -1,6 +1,5 @@
 #include "common/calibration/run_writer.h"
 
-#include <filesystem>
 #include <iomanip>
 
 namespace giocal {
@@ -18,28 +17,27 @@ void writeHeader(std::ostream& out, const std::vector<std::string>& names) {
 
 }  // namespace
 
-RunWriter::RunWriter(const std::string& folder) : folder_(folder) {
-  std::filesystem::create_directories(folder);
-  calibration_ = std::make_unique<AtomicFile>(folder + "/calibration.csv");
-  trajectory_ = std::make_unique<AtomicFile>(folder + "/trajectory.csv");
-  writeHeader(calibration_->stream(), calibrationCsvHeader());
-  writeHeader(trajectory_->stream(), truthCsvHeader());
+RunWriter::RunWriter(OutputSet& set, std::string prefix)
+    : set_(set),
+      prefix_(std::move(prefix)),
+      calibration_(set.open(prefix_ + "calibration.csv")),
+      trajectory_(set.open(prefix_ + "trajectory.csv")) {
+  writeHeader(calibration_, calibrationCsvHeader());
+  writeHeader(trajectory_, truthCsvHeader());
 }
 
 void RunWriter::estimate(const CalibrationEstimate& e) {
-  writeRow(calibration_->stream(), calibrationCsvRow(e));
+  writeRow(calibration_, calibrationCsvRow(e));
 }
 
-void RunWriter::trajectory(const TruthSample& s) {
-  writeRow(trajectory_->stream(), truthCsvRow(s));
-}
+void RunWriter::trajectory(const TruthSample& s) { writeRow(trajectory_, truthCsvRow(s)); }
 
-void RunWriter::commit(const CalibrationRun& run, const OdometerCalibration* truth) {
-  AtomicFile summary(folder_ + "/summary.json");
-  summary.stream() << summaryJson(run, truth);
-  calibration_->commit();
-  trajectory_->commit();
-  summary.commit();
+void RunWriter::finish(const CalibrationRun& run, const OdometerCalibration* truth) {
+  std::map<std::string, std::uintmax_t> files;
+  for (const char* name : {"calibration.csv", "trajectory.csv"}) {
+    files[name] = set_.close(prefix_ + name);
+  }
+  set_.open(prefix_ + "summary.json", true) << summaryJson(run, truth, files);
 }
 
 }  // namespace giocal

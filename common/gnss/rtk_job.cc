@@ -47,6 +47,7 @@ RtkSummary runRtk(const RtkJob& job, std::vector<RtkSolution>* out_solutions) {
   RtkSummary sum;
   BaseEpochMatcher matcher(base.epochs, job.options.max_base_offset);
   for (const ObsEpoch& e : rover.epochs) {
+    checkStop(job.stop);
     const RtkSolution s = filter.process(e, matcher.nearest(e.t));
     ++sum.epochs;
     sum.fixed += s.quality == 1;

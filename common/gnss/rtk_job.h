@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/gnss/rtk.h"
+#include "common/io/stop_request.h"
 
 namespace giocal {
 
@@ -17,6 +18,7 @@ struct RtkJob {
   std::vector<std::string> nav;
   std::optional<Eigen::Vector3d> base_pos;  // ECEF; else the base header's APPROX POSITION XYZ
   RtkOptions options;
+  const StopRequest* stop = nullptr;  // when requested, runRtk throws Interrupted, writing nothing
 };
 
 struct RtkSummary {

@@ -3,12 +3,18 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
+
+#include "common/io/output_set.h"
 
 namespace giocal {
 
 AtomicFile::AtomicFile(const std::string& path)
-    : path_(path), tmp_path_(path + ".tmp." + std::to_string(::getpid())) {
+    : path_(path), tmp_path_(path + ".giocal-tmp." + std::to_string(::getpid())) {
+  const std::filesystem::path p(path);
+  sweepStaleTemporaries(p.has_parent_path() ? p.parent_path().string() : ".",
+                        p.filename().string());
   out_.open(tmp_path_, std::ios::out | std::ios::trunc);
   if (!out_) throw std::runtime_error(path_ + ": cannot open for writing");
   out_.precision(12);

@@ -1,5 +1,5 @@
-// AtomicFile: writes to "<path>.tmp.<pid>" and renames onto <path> on commit, so an interrupted
-// run never leaves a half-written file.
+// AtomicFile: writes to "<path>.giocal-tmp.<pid>" and renames onto <path> on commit, so an
+// interrupted run never leaves a half-written file (a killed one's temporary is swept next time).
 #pragma once
 
 #include <fstream>

@@ -155,9 +155,11 @@ TEST(CalibrationRun, WritesTheBriefsFilesAndKeys) {
   run.fixed_epochs = 3;
   test::TempDir dir;
   {
-    RunWriter writer(dir.path());
+    OutputSet set(dir.path());
+    RunWriter writer(set);
     writer.estimate(e);
-    writer.commit(run, nullptr);
+    writer.finish(run, nullptr);
+    set.commit();
   }
   std::ifstream csv(dir.file("calibration.csv"));
   std::string header;
