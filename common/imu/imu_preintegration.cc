@@ -1,6 +1,7 @@
 #include "common/imu/imu_preintegration.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace giocal {
@@ -41,11 +42,13 @@ void ImuPreintegration::reset() {
 }
 
 void ImuPreintegration::integrate(double dt, const Eigen::Vector3d& gyro,
-                                  const Eigen::Vector3d& acc) {
-  if (!(dt > 0.0) || !gyro.allFinite() || !acc.allFinite()) {
+                                  const Eigen::Vector3d& acc, double extra_gyro_density,
+                                  double extra_accel_density) {
+  if (!(dt > 0.0) || !gyro.allFinite() || !acc.allFinite() || !(extra_gyro_density >= 0.0) ||
+      !(extra_accel_density >= 0.0)) {
     throw std::invalid_argument("ImuPreintegration: step needs dt > 0 and finite samples");
   }
-  steps_.push_back({dt, gyro, acc});
+  steps_.push_back({dt, gyro, acc, extra_gyro_density, extra_accel_density});
   addStep(steps_.back());
 }
 
@@ -83,9 +86,11 @@ void ImuPreintegration::addStep(const Step& s) {
   B.block<3, 3>(kBg, 6).setIdentity();
   B.block<3, 3>(kBa, 9).setIdentity();
 
+  const double sg = noise_.gyro_noise_density, sa = noise_.accel_noise_density;
+  const double eg = s.extra_gyro_density, ea = s.extra_accel_density;
   Eigen::Matrix<double, 12, 1> q;
-  q << Eigen::Vector3d::Constant(noise_.gyro_noise_density * noise_.gyro_noise_density / dt),
-      Eigen::Vector3d::Constant(noise_.accel_noise_density * noise_.accel_noise_density / dt),
+  q << Eigen::Vector3d::Constant((sg * sg + eg * eg) / dt),
+      Eigen::Vector3d::Constant((sa * sa + ea * ea) / dt),
       Eigen::Vector3d::Constant(noise_.gyro_bias_random_walk * noise_.gyro_bias_random_walk * dt),
       Eigen::Vector3d::Constant(noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt);
   cov_ = A * cov_ * A.transpose() + B * q.asDiagonal() * B.transpose();
@@ -106,7 +111,7 @@ void ImuPreintegration::addStep(const Step& s) {
 }
 
 void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, double t0,
-                                         double t1) {
+                                         double t1, const ImuBridgeModel& bridge) {
   if (!(t1 > t0)) throw std::invalid_argument("ImuPreintegration: needs t1 > t0");
   auto interp = [&](size_t k, double t) {
     const ImuSample& s0 = samples[k];
@@ -128,8 +133,22 @@ void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, 
        k + 1 < samples.size() && samples[k].t < t1; ++k) {
     const double a = std::max(samples[k].t, t0), b = std::min(samples[k + 1].t, t1);
     if (b <= a) continue;
-    const ImuSample sa = interp(k, a), sb = interp(k, b);
-    integrate(b - a, 0.5 * (sa.gyro + sb.gyro), 0.5 * (sa.acc + sb.acc));
+    const double span = samples[k + 1].t - samples[k].t;
+    if (span <= bridge.min_interval_s) {
+      const ImuSample sa = interp(k, a), sb = interp(k, b);
+      integrate(b - a, 0.5 * (sa.gyro + sb.gyro), 0.5 * (sa.acc + sb.acc));
+      continue;
+    }
+    // A gap: short steps, so that the covariance accrues as over a continuous interval (one long
+    // step leaves it singular), each with the noise of what the interpolation cannot know.
+    const double grow = span * std::sqrt(span) / 4.0;
+    const int n = static_cast<int>(std::ceil((b - a) / bridge.step_s));
+    for (int i = 0; i < n; ++i) {
+      const double ta = a + (b - a) * i / n, tb = a + (b - a) * (i + 1) / n;
+      const ImuSample sa = interp(k, ta), sb = interp(k, tb);
+      integrate(tb - ta, 0.5 * (sa.gyro + sb.gyro), 0.5 * (sa.acc + sb.acc),
+                bridge.angular_accel * grow, bridge.jerk * grow);
+    }
   }
 }
 

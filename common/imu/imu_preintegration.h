@@ -25,6 +25,19 @@ struct ImuResidual {
   Eigen::Matrix<double, 15, 3> J_p_j, J_q_j, J_v_j, J_ba_j, J_bg_j;
 };
 
+/// What the motion may do while the IMU is silent: a sample interval longer than
+/// `min_interval_s` is bridged by linear interpolation in steps of at most `step_s`, with extra
+/// white noise for what interpolation cannot know (a vehicle's rate changing by up to
+/// `angular_accel` rad/s^2, its specific force by `jerk` m/s^3: over a bridge of T seconds the
+/// interpolation error of the heading grows like angular_accel*T^2/4, which a noise density of
+/// angular_accel*T^1.5/4 reproduces; likewise for velocity). Ground-robot bounds; docs/design.md.
+struct ImuBridgeModel {
+  double min_interval_s = 0.05;
+  double step_s = 0.01;
+  double angular_accel = 1.0;
+  double jerk = 2.0;
+};
+
 class ImuPreintegration {
  public:
   /// gravity_n and omega_ie_n come from the LocalFrame; biases are the linearization point.
@@ -33,11 +46,15 @@ class ImuPreintegration {
                     const Eigen::Vector3d& b_g);
 
   /// Adds a step of dt seconds over which rate and specific force are constant (the caller passes
-  /// the mean of the two bounding samples). The mean is exact for constant inputs.
-  void integrate(double dt, const Eigen::Vector3d& gyro, const Eigen::Vector3d& acc);
+  /// the mean of the two bounding samples). The mean is exact for constant inputs. The extra
+  /// densities add to the IMU's white noise over this step (bridged gaps).
+  void integrate(double dt, const Eigen::Vector3d& gyro, const Eigen::Vector3d& acc,
+                 double extra_gyro_density = 0.0, double extra_accel_density = 0.0);
 
-  /// Integrates the samples covering [t0, t1], interpolating linearly at both ends.
-  void integrateSamples(const std::vector<ImuSample>& samples, double t0, double t1);
+  /// Integrates the samples covering [t0, t1], interpolating linearly at both ends and across
+  /// intervals the IMU left empty (ImuBridgeModel).
+  void integrateSamples(const std::vector<ImuSample>& samples, double t0, double t1,
+                        const ImuBridgeModel& bridge = {});
 
   /// Integrates again from the stored steps with new bias linearization points.
   void repropagate(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g);
@@ -68,6 +85,7 @@ class ImuPreintegration {
   struct Step {
     double dt;
     Eigen::Vector3d gyro, acc;
+    double extra_gyro_density, extra_accel_density;
   };
   void reset();
   void addStep(const Step& s);

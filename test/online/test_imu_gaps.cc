@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "common/calibration/calibration_inputs.h"
 #include "common/math/rotation.h"
@@ -29,22 +31,29 @@ CalibrationInputs withImuGap(CalibrationInputs in, double t0, double length) {
   return in;
 }
 
-TEST(ImuGaps, BothEstimatorsRestartAfterLongGapsAndStayWithinTwiceTheCleanError) {
+TEST(ImuGaps, BothEstimatorsBridgeOrRestartAndStayWithinTwiceTheCleanError) {
   const CalibrationInputs clean = twoLapsOfTheField(41);
-  const double t0 = clean.imu.front().t + 100.0;  // on the second straight
   for (const char* estimator : {"ekf", "fgo"}) {
     const CalibrationRun ref = replayInputs(clean, {estimator, {}, {}}, nullptr);
     const CalibrationError e0 = calibrationError(ref.final(), clean.truth->calib);
     const Eigen::Matrix<double, 8, 1> sd0 = ref.final().sigma();
-    for (double gap : {1.5, 10.0, 30.0}) {
-      SCOPED_TRACE(std::string(estimator) + " gap " + std::to_string(gap));
+    // In the first turn, and on the second straight.
+    for (const auto& [place, gap] : std::vector<std::pair<double, double>>{
+             {80.0, 1.0}, {80.0, 10.0}, {80.0, 30.0}, {100.0, 1.0}, {100.0, 10.0}, {100.0, 30.0}}) {
+      const double t0 = clean.imu.front().t + place;
+      SCOPED_TRACE(std::string(estimator) + " gap " + std::to_string(gap) + " s at +" +
+                   std::to_string(place) + " s");
       const CalibrationInputs in = withImuGap(clean, t0, gap);
       const CalibrationRun run = replayInputs(in, {estimator, {}, {}}, nullptr);
-      EXPECT_EQ(run.counter(Counter::kImuRestarts), 1);
+      // 1 s is bridged (calibration.max_imu_bridge_s), longer gaps restart.
+      const bool restart = gap > CalibrationOptions().max_imu_bridge_s;
+      EXPECT_EQ(run.counter(Counter::kImuGaps), 1);
+      EXPECT_EQ(run.counter(Counter::kImuRestarts), restart ? 1 : 0);
       EXPECT_EQ(run.status, "ok");
-      EXPECT_TRUE(std::any_of(run.warnings.begin(), run.warnings.end(), [](const std::string& w) {
-        return w.find("longer than calibration.max_imu_bridge_s") != std::string::npos;
-      }));
+      EXPECT_EQ(restart,
+                std::any_of(run.warnings.begin(), run.warnings.end(), [](const std::string& w) {
+                  return w.find("longer than calibration.max_imu_bridge_s") != std::string::npos;
+                }));
       const CalibrationError e = calibrationError(run.final(), in.truth->calib);
       // Within twice the clean run's error, or its sigma where that error happens to be tiny.
       const auto near = [](double err, double err0, double sd) {
@@ -63,7 +72,7 @@ TEST(ImuGaps, BothEstimatorsRestartAfterLongGapsAndStayWithinTwiceTheCleanError)
   }
 }
 
-TEST(ImuGaps, NoRestartPossibleLeavesTheLastCalibrationWithAPartialStatus) {
+TEST(ImuGaps, BridgedOrWhereNoRestartIsPossibleAPartialStatusWithTheLastCalibration) {
   // The paper preset circles after 70 s: no straight metre to find a heading on again.
   const sim::SimConfig cfg =
       sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
@@ -71,13 +80,23 @@ TEST(ImuGaps, NoRestartPossibleLeavesTheLastCalibrationWithAPartialStatus) {
   sim::writeDataset(sim::simulate(cfg, 42), dir.path() + "/data");
   const CalibrationInputs clean = loadCalibrationInputs(dir.path() + "/data");
   const double t0 = clean.imu.front().t + 70.0;
-  const CalibrationInputs in = withImuGap(clean, t0, 10.0);
-  const CalibrationRun run = replayInputs(in, {"ekf", {}, {}}, nullptr);
-  EXPECT_EQ(run.status.rfind("partial: an IMU gap", 0), 0u) << run.status;
-  ASSERT_TRUE(run.latest);
-  EXPECT_LE(run.final().t, t0 + 1e-6);
-  // What it reports is honest for the data before the gap.
-  EXPECT_LT(calibrationError(run.final(), in.truth->calib).nees7, 30.0);
+  for (const char* estimator : {"ekf", "fgo"}) {
+    for (double gap : {1.0, 10.0, 30.0}) {
+      SCOPED_TRACE(std::string(estimator) + " gap " + std::to_string(gap));
+      const CalibrationInputs in = withImuGap(clean, t0, gap);
+      const CalibrationRun run = replayInputs(in, {estimator, {}, {}}, nullptr);
+      ASSERT_TRUE(run.latest);
+      if (gap <= CalibrationOptions().max_imu_bridge_s) {  // bridged: the whole drive
+        EXPECT_EQ(run.status, "ok");
+        EXPECT_GT(run.final().t, t0 + 60.0);
+      } else {
+        EXPECT_EQ(run.status.rfind("partial: an IMU gap", 0), 0u) << run.status;
+        EXPECT_LE(run.final().t, t0 + 1e-6);
+      }
+      // What it reports is honest for the data before the gap.
+      EXPECT_LT(calibrationError(run.final(), in.truth->calib).nees7, 30.0);
+    }
+  }
 }
 
 TEST(ImuGaps, ShortGapsAreBridged) {
