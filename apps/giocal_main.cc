@@ -8,6 +8,7 @@
 #include "apps/calibrate_command.h"
 #include "apps/check_command.h"
 #include "apps/compare_command.h"
+#include "apps/deadreckon_command.h"
 #include "apps/interrupt_watch.h"
 #include "apps/simulate_command.h"
 #include "common/gnss/rtk_config.h"
@@ -29,7 +30,12 @@ const char* kUsage =
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir> "
     "[--overwrite]\n"
-    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite]\n";
+    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite]\n"
+    "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
+    "guess>\n"
+    "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv>] "
+    "[--config <yaml>]\n"
+    "                   --out <dir> [--overwrite]\n";
 
 int runCheckCommand(int argc, char** argv) {
   po::options_description opts("giocal check");
@@ -132,6 +138,37 @@ int runCompareCommand(int argc, char** argv) {
   return 0;
 }
 
+int runDeadReckonCommand(int argc, char** argv) {
+  po::options_description opts("giocal deadreckon");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
+      "calibration", po::value<std::string>()->required(),
+      "run/summary.json, calibration.csv@<s>, truth or guess")(
+      "start", po::value<double>()->default_value(100.0),
+      "outage start, s after the first rover epoch")(
+      "duration", po::value<double>()->default_value(1000.0), "outage length [s]")(
+      "reference", po::value<std::string>()->default_value(""),
+      "reference trajectory (default: the dataset's truth.csv)")(
+      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
+      "out", po::value<std::string>()->required(), "output folder")(
+      "overwrite", "replace existing outputs in --out");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, opts), vm);
+  po::notify(vm);
+  giocal::DeadReckonJob job;
+  job.data = vm["data"].as<std::string>();
+  job.calibration = vm["calibration"].as<std::string>();
+  job.start_s = vm["start"].as<double>();
+  job.duration_s = vm["duration"].as<double>();
+  job.reference = vm["reference"].as<std::string>();
+  job.config = vm["config"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") != 0;
+  const giocal::InterruptWatch interrupts;
+  job.stop = interrupts.stop();
+  giocal::runDeadReckon(job, std::cout);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -146,6 +183,7 @@ int main(int argc, char** argv) {
     if (command == "rtk") return runRtkCommand(argc - 1, argv + 1);
     if (command == "calibrate") return runCalibrateCommand(argc - 1, argv + 1);
     if (command == "compare") return runCompareCommand(argc - 1, argv + 1);
+    if (command == "deadreckon") return runDeadReckonCommand(argc - 1, argv + 1);
     std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
     return 2;
   } catch (const giocal::Interrupted& e) {

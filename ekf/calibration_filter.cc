@@ -108,8 +108,32 @@ void CalibrationFilter::reopenCalibration() {
 }
 
 std::vector<int> CalibrationFilter::heldIndices() const {
+  if (options_.hold_calibration) {
+    const std::array<int, 8> idx = calibrationIndices(s_);
+    return std::vector<int>(idx.begin(), idx.end());
+  }
   if (!options_.hold_p_b_m_z) return {};
   return {s_.offset(block::kPbm) + 2};
+}
+
+void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vector3d& v_n_b,
+                                 const Eigen::Quaterniond& q_n_b) {
+  NavState x = navState(s_);
+  const Mat3 dR = q_n_b.toRotationMatrix() * x.q_n_b.toRotationMatrix().transpose();
+  const auto rotate = [&](const char* name) {
+    const Quat q = quatFromWxyz(s_.value(name).data());
+    quatToWxyz(Quat(dR * q.toRotationMatrix()).normalized(), s_.value(name).data());
+  };
+  if (s_.has(ekf_var::kOdoP)) {
+    s_.value(ekf_var::kOdoP) = p_n_b + dR * (s_.value(ekf_var::kOdoP) - x.p_n_b);
+    rotate(ekf_var::kOdoQ);
+  }
+  if (s_.has(ekf_var::kHeadingClone)) rotate(ekf_var::kHeadingClone);
+  x.p_n_b = p_n_b;
+  x.v_n_b = v_n_b;
+  x.q_n_b = q_n_b;
+  setNavState(s_, x);
+  pending_.reset();
 }
 
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,
@@ -213,7 +237,7 @@ double CalibrationFilter::propagateTo(double t) {
   propagateImu(s_, pre);
   pending_.reset();
   const double dt = t - t_;
-  const double q = dataset_.odom_noise.scale_random_walk;
+  const double q = options_.hold_calibration ? 0.0 : dataset_.odom_noise.scale_random_walk;
   for (const char* name : {block::kSv.c_str(), block::kSw.c_str()}) {
     const int i = s_.offset(name);
     s_.covariance()(i, i) += q * q * dt;
@@ -267,7 +291,8 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
               std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))));
       if (!interval_moved_) model = std::make_shared<StandstillProjection>(model);
       step.interval = true;
-      step.reopened = odometer_rejected_in_row_ >= options_.max_odometer_rejections;
+      step.reopened = !options_.hold_calibration &&
+                      odometer_rejected_in_row_ >= options_.max_odometer_rejections;
       if (step.reopened) reopenCalibration();
       const UpdateResult r = update(*model,
                                     {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ,

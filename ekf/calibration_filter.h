@@ -78,6 +78,12 @@ class CalibrationFilter {
   /// Mean raw gyro over [t - half_window, t + half_window] and the variance of that mean.
   Gyro gyroMean(double t, double half_window) const;
 
+  /// Moves the pose and velocity to the given ones (biases, covariance and calibration kept),
+  /// carrying the pose clones rigidly along so that the odometer interval stays consistent:
+  /// dead reckoning starting from a reference state.
+  void movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vector3d& v_n_b,
+                const Eigen::Quaterniond& q_n_b);
+
   NavState nav() const;
   CalibrationEstimate calibration() const;
   /// The navigation state predicted to t >= time() (mean only) as a truth.csv row: IMU origin,

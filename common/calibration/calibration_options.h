@@ -60,6 +60,9 @@ struct CalibrationOptions {
   bool estimate_p_b_g = false;       // estimate the GNSS lever arm (else fixed at dataset.yaml)
   double p_b_g_sigma = 0.05;         // its prior 1-sigma when estimated [m]
   bool hold_p_b_m_z = true;          // keep p_b_m.z at its prior (unobservable in planar motion)
+  // Every calibration state held at its prior as a consider state (its covariance enters the
+  // updates, it is never corrected): dead reckoning with a given calibration. Not a YAML key.
+  bool hold_calibration = false;
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale
@@ -77,8 +80,8 @@ struct CalibrationOptions {
   // covariance. Interpolating the IMU across a gap is a model error the preintegration noise
   // does not cover (a 10 s gap left p_b_m.y 4.4 sigma off) [s].
   double max_imu_bridge_s = 1.0;
-  double max_base_offset = 0.5;     // "rtk" section: largest rover-base time-tag gap [s]
-  double divergence_sigma = 50.0;   // DD code innovations this many sigma off: diverged
+  double max_base_offset = 0.5;    // "rtk" section: largest rover-base time-tag gap [s]
+  double divergence_sigma = 50.0;  // DD code innovations this many sigma off: diverged
   OnlineOptions online;
 };
 

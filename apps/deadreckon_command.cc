@@ -1,0 +1,106 @@
+#include "apps/deadreckon_command.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+
+#include "common/io/output_set.h"
+#include "common/math/rotation.h"
+#include "replay/calibration_source.h"
+#include "replay/config.h"
+#include "replay/dead_reckoning.h"
+
+namespace giocal {
+namespace {
+
+const std::vector<std::string> kFiles{"trajectory.csv", "error.csv", "summary.json"};
+
+nlohmann::ordered_json calibrationJson(const CalibrationPrior& c) {
+  const Eigen::Quaterniond& q = c.mean.q_b_m;
+  const Eigen::Vector3d rpy = rpyFromRotation(q.toRotationMatrix()) * kRadToDeg;
+  return {{"s_v", c.mean.s_v},
+          {"s_w", c.mean.s_w},
+          {"p_b_m", {c.mean.p_b_m.x(), c.mean.p_b_m.y(), c.mean.p_b_m.z()}},
+          {"q_b_m", {q.w(), q.x(), q.y(), q.z()}},
+          {"rpy_b_m_deg", {rpy.x(), rpy.y(), rpy.z()}}};
+}
+
+}  // namespace
+
+void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
+  if (!job.overwrite) {
+    for (const std::string& f : kFiles) {
+      if (std::filesystem::exists(job.out + "/" + f)) {
+        throw std::runtime_error(job.out + "/" + f + " exists; give --overwrite to replace it");
+      }
+    }
+  }
+  DeadReckoningJob dr;
+  dr.options = readGiocalConfig(job.config).calibration;
+  dr.start_s = job.start_s;
+  dr.duration_s = job.duration_s;
+  const CalibrationInputs in = loadCalibrationInputs(job.data);
+  checkStop(job.stop);
+  const CalibrationSource source = readCalibrationSource(job.calibration, in);
+  dr.calibration = source.calibration;
+  std::string reference_path = job.reference;
+  if (reference_path.empty()) {
+    if (in.description.truth.empty()) {
+      throw std::runtime_error(job.data +
+                               " has no truth.csv: give --reference <trajectory.csv> (for example "
+                               "a calibrate run's trajectory.csv)");
+    }
+    reference_path = in.description.pathOf(in.description.truth);
+  }
+  const ReferenceTrajectory reference(readTruthCsv(reference_path));
+  const DeadReckoning r = deadReckon(in, reference, dr);
+  checkStop(job.stop);
+
+  OutputSet outputs(job.out);
+  std::ostream& traj = outputs.open("trajectory.csv");
+  for (size_t i = 0; i < truthCsvHeader().size(); ++i)
+    traj << (i ? "," : "") << truthCsvHeader()[i];
+  traj << "\n" << std::setprecision(17);
+  for (const TruthSample& s : r.trajectory) {
+    const std::vector<double> row = truthCsvRow(s);
+    for (size_t i = 0; i < row.size(); ++i) traj << (i ? "," : "") << row[i];
+    traj << "\n";
+  }
+  std::ostream& err = outputs.open("error.csv");
+  err << "t,elapsed_s,distance_m,east_m,north_m,up_m,horizontal_m\n" << std::setprecision(12);
+  for (const DeadReckoningError& e : r.errors) {
+    err << e.t << "," << e.elapsed << "," << e.distance << "," << e.enu.x() << "," << e.enu.y()
+        << "," << e.enu.z() << "," << e.horizontal() << "\n";
+  }
+  nlohmann::ordered_json j;
+  j["files"] = {{"trajectory.csv", outputs.close("trajectory.csv")},
+                {"error.csv", outputs.close("error.csv")}};
+  j["calibration_source"] = source.label;
+  j["calibration"] = calibrationJson(source.calibration);
+  j["reference"] = reference_path;
+  j["start_s"] = job.start_s;
+  j["t_start"] = r.t_start;
+  j["duration_s"] = r.t_end - r.t_start;
+  j["gnss_aided_before_start_s"] = r.aided_s;
+  j["horizontal_max_m"] = r.horizontal_max_m;
+  j["horizontal_rmse_m"] = r.horizontal_rmse_m;
+  j["distance_m"] = r.distance_m;
+  j["final_error_m"] = r.final_error_m;
+  j["final_error_percent_of_distance"] = r.final_error_percent_of_distance;
+  outputs.open("summary.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+  outputs.commit();
+
+  log << std::fixed << std::setprecision(2) << "giocal deadreckon: " << job.data << " with "
+      << source.label << "\n  outage from +" << std::setprecision(1) << job.start_s << " s for "
+      << r.t_end - r.t_start << " s (" << r.aided_s << " s GNSS-aided before), "
+      << std::setprecision(1) << r.distance_m << " m driven\n  horizontal error: max "
+      << std::setprecision(2) << r.horizontal_max_m << " m, RMSE " << r.horizontal_rmse_m
+      << " m, final " << r.final_error_m << " m (" << r.final_error_percent_of_distance
+      << " % of the distance)\n  outputs: " << job.out
+      << "/{trajectory.csv, error.csv, summary.json}\n";
+  log.unsetf(std::ios::fixed);
+}
+
+}  // namespace giocal

@@ -1,0 +1,111 @@
+#include "replay/calibration_source.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "common/calibration/calibration_run.h"
+#include "common/io/csv_table.h"
+#include "common/io/data_error.h"
+#include "common/io/output_set.h"
+#include "common/io/text.h"
+#include "common/math/rotation.h"
+
+namespace giocal {
+namespace {
+
+CalibrationSource fromSummary(const std::string& path) {
+  verifyOutputSet(path);
+  std::ifstream in(path);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("final") || j["final"].is_null() ||
+      !j.contains("covariance_tangent")) {
+    throw DataError(path, 0, "no final calibration with its covariance_tangent in it");
+  }
+  CalibrationSource s;
+  try {
+    const auto& f = j["final"];
+    s.calibration.mean.s_v = f["s_v"].get<double>();
+    s.calibration.mean.s_w = f["s_w"].get<double>();
+    const auto p = f["p_b_m"].get<std::vector<double>>();
+    const auto q = f["q_b_m"].get<std::vector<double>>();
+    const auto C = j["covariance_tangent"].get<std::vector<std::vector<double>>>();
+    if (p.size() != 3 || q.size() != 4 || C.size() != 8) throw std::runtime_error("sizes");
+    s.calibration.mean.p_b_m = Eigen::Vector3d(p[0], p[1], p[2]);
+    s.calibration.mean.q_b_m = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+    Eigen::Matrix<double, 8, 8> cov;
+    for (int r = 0; r < 8; ++r) {
+      if (C[static_cast<size_t>(r)].size() != 8) throw std::runtime_error("sizes");
+      for (int c = 0; c < 8; ++c) cov(r, c) = C[static_cast<size_t>(r)][static_cast<size_t>(c)];
+    }
+    if (!cov.allFinite()) throw std::runtime_error("not finite");
+    s.calibration.covariance = cov;
+  } catch (const std::exception& e) {
+    throw DataError(path, 0, std::string("bad final calibration or covariance: ") + e.what());
+  }
+  s.label = path;
+  return s;
+}
+
+CalibrationSource fromCsvAt(const std::string& path, double seconds, double t0) {
+  const CsvTable table = readCsvTable(path, calibrationCsvHeader(), {});
+  const std::vector<double>* row = nullptr;
+  for (const auto& r : table.rows) {
+    if (r[0] <= t0 + seconds + 1e-9) row = &r;
+  }
+  if (!row) {
+    throw DataError(
+        path, 0,
+        "no row at or before " + std::to_string(seconds) + " s after the data's first rover epoch");
+  }
+  const std::vector<double>& r = *row;
+  CalibrationSource s;
+  OdometerCalibration& m = s.calibration.mean;
+  m.s_v = r[1];
+  m.s_w = r[2];
+  m.p_b_m = Eigen::Vector3d(r[3], r[4], r[5]);
+  m.q_b_m = Eigen::Quaterniond(rotationFromRpy(Eigen::Vector3d(r[6], r[7], r[8]) * kDegToRad));
+  s.calibration.sd_s_v = r[9];
+  s.calibration.sd_s_w = r[10];
+  s.calibration.sd_p_b_m = Eigen::Vector3d(r[11], r[12], r[13]);
+  // The file has roll/pitch/yaw sigmas only: taken as the tangent's (equal for small angles).
+  s.calibration.sd_rpy_b_m = Eigen::Vector3d(r[14], r[15], r[16]) * kDegToRad;
+  s.label = path + "@" + fixedText(seconds, 1);
+  return s;
+}
+
+}  // namespace
+
+CalibrationSource readCalibrationSource(const std::string& source, const CalibrationInputs& in) {
+  if (source == "truth") {
+    if (!in.truth)
+      throw std::runtime_error("--calibration truth: the dataset has no truth_calib.yaml");
+    CalibrationSource s;
+    s.calibration.mean = in.truth->calib;
+    s.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
+    s.label = "truth";
+    return s;
+  }
+  if (source == "guess") return {in.description.initial_calibration, "guess"};
+  const size_t at = source.rfind('@');
+  if (at != std::string::npos) {
+    double seconds = 0.0;
+    size_t used = 0;
+    try {
+      seconds = std::stod(source.substr(at + 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != source.size() - at - 1 || !std::isfinite(seconds)) {
+      throw std::runtime_error("--calibration " + source +
+                               ": expected <calibration.csv>@<seconds>");
+    }
+    return fromCsvAt(source.substr(0, at), seconds, in.rover.epochs.front().t);
+  }
+  if (source.size() >= 5 && source.substr(source.size() - 5) == ".json") return fromSummary(source);
+  throw std::runtime_error("--calibration " + source +
+                           ": expected <run>/summary.json, <calibration.csv>@<seconds>, truth or "
+                           "guess");
+}
+
+}  // namespace giocal

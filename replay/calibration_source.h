@@ -1,0 +1,23 @@
+// The calibration a user names for dead reckoning: a calibrate run's summary.json, its
+// calibration.csv at a time, the dataset's truth or its initial guess.
+#pragma once
+
+#include <string>
+
+#include "common/calibration/calibration_inputs.h"
+
+namespace giocal {
+
+struct CalibrationSource {
+  CalibrationPrior calibration;  // mean and covariance
+  std::string label;             // what it is, for outputs
+};
+
+/// `source`: "<dir>/summary.json" (final values and covariance; the run's output set is checked),
+/// "<file>.csv@<seconds>" (the last row at or before that many seconds after the data's first
+/// rover epoch; covariance from its sigma columns), "truth" (truth_calib.yaml, no uncertainty) or
+/// "guess" (dataset.yaml's initial calibration and sigmas). Throws DataError or
+/// std::runtime_error saying what is wrong with it.
+CalibrationSource readCalibrationSource(const std::string& source, const CalibrationInputs& in);
+
+}  // namespace giocal

@@ -1,0 +1,115 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "common/calibration/calibration_run.h"
+#include "common/calibration/run_writer.h"
+#include "common/io/data_error.h"
+#include "common/io/output_set.h"
+#include "replay/calibration_source.h"
+#include "replay/dead_reckoning.h"
+#include "sim/simulator.h"
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+/// Two laps of the field preset (about 260 s), loaded, with its truth as the reference.
+struct Drive {
+  test::TempDir dir;
+  CalibrationInputs in;
+  std::unique_ptr<ReferenceTrajectory> reference;
+  explicit Drive(std::uint64_t seed) {
+    sim::SimConfig cfg =
+        sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
+    cfg.segments.resize(2 + 2 * 4);
+    sim::writeDataset(sim::simulate(cfg, seed), dir.file("data"));
+    in = loadCalibrationInputs(dir.file("data"));
+    reference = std::make_unique<ReferenceTrajectory>(readTruthCsv(dir.file("data/truth.csv")));
+  }
+  DeadReckoning run(const OdometerCalibration& calib) const {
+    DeadReckoningJob job;
+    job.start_s = 40.0;
+    job.duration_s = 200.0;
+    job.calibration.mean = calib;
+    job.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
+    return deadReckon(in, *reference, job);
+  }
+};
+
+TEST(DeadReckoning, StartsOnTheReferenceAndAScaleErrorShowsAsTheSameShareOfTheDistance) {
+  const Drive drive(61);
+  const OdometerCalibration truth = drive.in.truth->calib;
+  const DeadReckoning exact = drive.run(truth);
+  ASSERT_FALSE(exact.errors.empty());
+  EXPECT_LT(exact.errors.front().horizontal(), 1e-6);  // moved onto the reference at the start
+  EXPECT_NEAR(exact.errors.back().elapsed, 200.0, 0.11);
+  EXPECT_GT(exact.distance_m, 250.0);  // 1.5 m/s, stops and turns
+  EXPECT_GT(exact.aided_s, 10.0);
+  EXPECT_LE(exact.horizontal_rmse_m, exact.horizontal_max_m);
+  // The odometer's distance scale wrong by 2 %: the along-track error grows to about 2 % of the
+  // distance; with the true calibration it stays several times smaller.
+  OdometerCalibration scaled = truth;
+  scaled.s_v += 0.02;
+  const DeadReckoning wrong = drive.run(scaled);
+  EXPECT_GT(wrong.horizontal_max_m, 3.0 * exact.horizontal_max_m);
+  EXPECT_GT(wrong.final_error_percent_of_distance, 0.5);
+  EXPECT_LT(wrong.final_error_percent_of_distance, 3.0);
+  // A yaw error of the IMU mounting of 2 degrees: a heading error the odometer integrates (on a
+  // closed loop the lateral errors of opposite sides partly cancel: 2.6x on seed 61).
+  OdometerCalibration yawed = truth;
+  yawed.q_b_m = truth.q_b_m *
+                Eigen::Quaterniond(Eigen::AngleAxisd(2.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()));
+  EXPECT_GT(drive.run(yawed).horizontal_max_m, 2.0 * exact.horizontal_max_m);
+}
+
+TEST(CalibrationSource, ReadsRunsRowsTruthAndGuessAndSaysWhatIsWrong) {
+  const Drive drive(62);
+  const test::TempDir& dir = drive.dir;
+  // A run's output set, written as calibrate writes it.
+  CalibrationRun run;
+  run.estimator = "ekf";
+  CalibrationEstimate e;
+  e.t = drive.in.rover.epochs.front().t + 50.0;
+  e.calib.s_v = 0.012;
+  e.calib.p_b_m = Eigen::Vector3d(0.1, -0.2, 0.3);
+  e.cov = Eigen::Matrix<double, 8, 8>::Identity() * 4e-6;
+  run.latest = e;
+  {
+    OutputSet set(dir.file("run"));
+    RunWriter writer(set);
+    writer.estimate(e);
+    CalibrationEstimate later = e;
+    later.t += 100.0;
+    later.calib.s_v = 0.02;
+    writer.estimate(later);
+    writer.finish(run, nullptr);
+    set.commit();
+  }
+  const CalibrationSource s = readCalibrationSource(dir.file("run/summary.json"), drive.in);
+  EXPECT_NEAR(s.calibration.mean.s_v, 0.012, 1e-12);
+  ASSERT_TRUE(s.calibration.covariance);
+  EXPECT_NEAR((*s.calibration.covariance)(3, 3), 4e-6, 1e-15);
+  const CalibrationSource at60 =
+      readCalibrationSource(dir.file("run/calibration.csv@60"), drive.in);
+  EXPECT_NEAR(at60.calibration.mean.s_v, 0.012, 1e-12);
+  EXPECT_NEAR(at60.calibration.sd_p_b_m.y(), 2e-3, 1e-9);
+  const CalibrationSource at200 =
+      readCalibrationSource(dir.file("run/calibration.csv@200"), drive.in);
+  EXPECT_NEAR(at200.calibration.mean.s_v, 0.02, 1e-12);
+  EXPECT_THROW(readCalibrationSource(dir.file("run/calibration.csv@10"), drive.in), DataError);
+  EXPECT_THROW(readCalibrationSource(dir.file("run/calibration.csv@ten"), drive.in),
+               std::runtime_error);
+  EXPECT_EQ(readCalibrationSource("truth", drive.in).calibration.mean.s_w,
+            drive.in.truth->calib.s_w);
+  EXPECT_EQ(readCalibrationSource("guess", drive.in).calibration.mean.s_v,
+            drive.in.description.initial_calibration.mean.s_v);
+  // A summary beside a calibration.csv of another run is refused.
+  std::ofstream(dir.file("run/calibration.csv"), std::ios::app) << "1,2,3\n";
+  EXPECT_THROW(readCalibrationSource(dir.file("run/summary.json"), drive.in), DataError);
+  EXPECT_THROW(readCalibrationSource("nonsense", drive.in), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace giocal
