@@ -1,5 +1,6 @@
 #include "replay/calibration_source.h"
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -100,7 +101,18 @@ CalibrationSource readCalibrationSource(const std::string& source, const Calibra
       throw std::runtime_error("--calibration " + source +
                                ": expected <calibration.csv>@<seconds>");
     }
-    return fromCsvAt(source.substr(0, at), seconds, in.rover.epochs.front().t);
+    // Seconds count from the start of the run that wrote the file (its summary.json beside it),
+    // else from the first rover epoch of the data being dead-reckoned.
+    const std::string csv = source.substr(0, at);
+    double t0 = in.rover.epochs.front().t;
+    std::ifstream beside((std::filesystem::path(csv).parent_path() / "summary.json").string());
+    if (beside) {
+      const nlohmann::json j = nlohmann::json::parse(beside, nullptr, false);
+      if (!j.is_discarded() && j.contains("t_first_rover_epoch") &&
+          j["t_first_rover_epoch"].is_number())
+        t0 = j["t_first_rover_epoch"].get<double>();
+    }
+    return fromCsvAt(csv, seconds, t0);
   }
   if (source.size() >= 5 && source.substr(source.size() - 5) == ".json") return fromSummary(source);
   throw std::runtime_error("--calibration " + source +

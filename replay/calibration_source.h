@@ -14,8 +14,9 @@ struct CalibrationSource {
 };
 
 /// `source`: "<dir>/summary.json" (final values and covariance; the run's output set is checked),
-/// "<file>.csv@<seconds>" (the last row at or before that many seconds after the data's first
-/// rover epoch; covariance from its sigma columns), "truth" (truth_calib.yaml, no uncertainty) or
+/// "<file>.csv@<seconds>" (the last row at or before that many seconds after the first rover
+/// epoch of the run that wrote it, from the summary.json beside it, else of `in`; covariance from
+/// its sigma columns), "truth" (truth_calib.yaml, no uncertainty) or
 /// "guess" (dataset.yaml's initial calibration and sigmas). Throws DataError or
 /// std::runtime_error saying what is wrong with it.
 CalibrationSource readCalibrationSource(const std::string& source, const CalibrationInputs& in);

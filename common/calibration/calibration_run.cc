@@ -157,6 +157,7 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
     j["sd"] = nullptr;
   }
   j["data_duration_s"] = run.data_duration_s;
+  if (std::isfinite(run.t_first_rover_epoch)) j["t_first_rover_epoch"] = run.t_first_rover_epoch;
   j["wall_time_s"] = run.wall_time_s;
   j["gnss_epochs"] = run.gnss_epochs;
   j["fix_rate"] = run.fixRate();

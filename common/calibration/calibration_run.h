@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <string>
@@ -41,6 +42,7 @@ struct CalibrationRun {
   std::string estimator;                      // "ekf" or "fgo"
   std::optional<CalibrationEstimate> latest;  // the newest calibration estimate
   double data_duration_s = 0.0;
+  double t_first_rover_epoch = NAN;  // data time the "seconds after the start" of outputs count from
   double wall_time_s = 0.0;                      // estimator time, reading the files excluded
   double load_time_s = 0.0;                      // reading and checking the dataset files
   double t_initialized = 0.0;                    // time of the first estimated state

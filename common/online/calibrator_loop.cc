@@ -291,6 +291,7 @@ void Calibrator::finish() {
     for (const std::string& w : weakDirections(*run_.latest, original_.initial_calibration))
       run_.warn(w);
   }
+  run_.t_first_rover_epoch = t_rover_first_;
   if (!std::isnan(t_imu_first_) && !std::isnan(t_rover_first_)) {
     run_.data_duration_s = std::max(
         0.0, std::min(t_imu_last_, t_rover_last_) - std::max(t_imu_first_, t_rover_first_));

@@ -99,6 +99,19 @@ TEST(CalibrationSource, ReadsRunsRowsTruthAndGuessAndSaysWhatIsWrong) {
       readCalibrationSource(dir.file("run/calibration.csv@200"), drive.in);
   EXPECT_NEAR(at200.calibration.mean.s_v, 0.02, 1e-12);
   EXPECT_THROW(readCalibrationSource(dir.file("run/calibration.csv@10"), drive.in), DataError);
+  // A run whose data started 100 s earlier than these data (another drive): its own start counts.
+  run.t_first_rover_epoch = drive.in.rover.epochs.front().t - 100.0;
+  {
+    OutputSet set(dir.file("other"));
+    RunWriter writer(set);
+    writer.estimate(e);
+    writer.finish(run, nullptr);
+    set.commit();
+  }
+  EXPECT_THROW(readCalibrationSource(dir.file("other/calibration.csv@60"), drive.in), DataError);
+  EXPECT_NEAR(
+      readCalibrationSource(dir.file("other/calibration.csv@160"), drive.in).calibration.mean.s_v,
+      0.012, 1e-12);
   EXPECT_THROW(readCalibrationSource(dir.file("run/calibration.csv@ten"), drive.in),
                std::runtime_error);
   EXPECT_EQ(readCalibrationSource("truth", drive.in).calibration.mean.s_w,
