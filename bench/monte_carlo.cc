@@ -7,9 +7,13 @@
 //                           [--arw-deg-sqrt-h A] [--gyro-bias-deg-h B]   (override the preset's
 //                           gyro) [--straight-s S]   (duration of the preset's straight
 //                           segments) [--arc-s S]   (of its arcs; 0 drops them: a drive that
-//                           never turns, docs/results.md) [--guess-at-truth 1]   (start from the true
-//                           calibration, keeping the prior sigma: a diagnostic of linearization,
-//                           see docs/results.md)
+//                           never turns, docs/results.md) [--guess-at-truth 1]   (start from the
+//                           true calibration, keeping the prior sigma: a diagnostic of
+//                           linearization, see docs/results.md) [--schemes TC,TC-LE-C,TC-LE-OL]
+//                           (the paper's simulation schemes: the GNSS lever arm known exactly; 0.1
+//                           m wrong per axis and held; the same error, estimated online) [--box-csv
+//                           <file>] (per seed and scheme, errors and sigmas at 0, 60 and 120 s
+//                           after the first rover epoch: the paper's box-plot statistics)
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -21,6 +25,7 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,6 +33,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/initial_state.h"
 #include "common/math/rotation.h"
+#include "common/online/run_sink.h"
 #include "replay/config.h"
 #include "replay/estimator_factory.h"
 #include "replay/replay.h"
@@ -35,8 +41,27 @@
 
 namespace {
 
-using Runner = std::function<giocal::CalibrationRun(const giocal::CalibrationInputs&,
-                                                    const giocal::CalibrationOptions&)>;
+using Runner = std::function<giocal::CalibrationRun(
+    const giocal::CalibrationInputs&, const giocal::CalibrationOptions&, giocal::RunSink*)>;
+
+/// X, Y, roll, pitch, yaw [deg], s_v, s_w: errors and sigmas in the tables' order.
+void errorsAndSigmas(const giocal::CalibrationEstimate& est,
+                     const giocal::OdometerCalibration& truth, double v[7], double sd[7]) {
+  const giocal::CalibrationError e = giocal::calibrationError(est, truth);
+  const double vv[7] = {e.p_b_m.x(),
+                        e.p_b_m.y(),
+                        e.rpy.x() * giocal::kRadToDeg,
+                        e.rpy.y() * giocal::kRadToDeg,
+                        e.rpy.z() * giocal::kRadToDeg,
+                        e.s_v,
+                        e.s_w};
+  const Eigen::Matrix<double, 8, 1> s = est.sigma();
+  const double ss[7] = {s[2], s[3], s[5], s[6], s[7], s[0], s[1]};
+  for (int k = 0; k < 7; ++k) {
+    v[k] = vv[k];
+    sd[k] = ss[k];
+  }
+}
 
 struct Tally {
   // Per seed: signed final error and its reported 1-sigma of X, Y, roll, pitch, yaw, s_v, s_w.
@@ -85,6 +110,8 @@ int main(int argc, char** argv) {
   std::string config;
   double arw = -1.0, gyro_bias = -1.0, straight_s = -1.0, arc_s = -1.0;  // negative: the preset's
   bool guess_at_truth = false;
+  std::vector<std::string> schemes{"TC"};
+  std::string box_csv;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--preset")
@@ -107,7 +134,19 @@ int main(int argc, char** argv) {
       guess_at_truth = std::stoi(v) != 0;
     else if (k == "--estimator")
       continue;  // read below
-    else {
+    else if (k == "--box-csv")
+      box_csv = v;
+    else if (k == "--schemes") {
+      schemes.clear();
+      std::stringstream ss(v);
+      for (std::string s; std::getline(ss, s, ',');) {
+        if (s != "TC" && s != "TC-LE-C" && s != "TC-LE-OL") {
+          std::cerr << "unknown scheme " << s << " (TC, TC-LE-C, TC-LE-OL)\n";
+          return 2;
+        }
+        schemes.push_back(s);
+      }
+    } else {
       std::cerr << "unknown option " << k << "\n";
       return 2;
     }
@@ -138,8 +177,9 @@ int main(int argc, char** argv) {
   std::map<std::string, Runner> estimators;
   for (const std::string& name : giocal::estimatorNames()) {
     estimators[name] = [name, &fgo_options](const giocal::CalibrationInputs& in,
-                                            const giocal::CalibrationOptions& o) {
-      return giocal::replayInputs(in, {name, o, fgo_options}, nullptr);
+                                            const giocal::CalibrationOptions& o,
+                                            giocal::RunSink* sink) {
+      return giocal::replayInputs(in, {name, o, fgo_options}, sink);
     };
   }
   std::string only;
@@ -162,15 +202,8 @@ int main(int argc, char** argv) {
                    const giocal::OdometerCalibration& truth, const giocal::CalibrationRun* r) {
     Tally& t = tally[name];
     const giocal::CalibrationError e = giocal::calibrationError(est, truth);
-    const double v[7] = {e.p_b_m.x(),
-                         e.p_b_m.y(),
-                         e.rpy.x() * giocal::kRadToDeg,
-                         e.rpy.y() * giocal::kRadToDeg,
-                         e.rpy.z() * giocal::kRadToDeg,
-                         e.s_v,
-                         e.s_w};
-    const Eigen::Matrix<double, 8, 1> s = est.sigma();
-    const double sd[7] = {s[2], s[3], s[5], s[6], s[7], s[0], s[1]};  // the order of v
+    double v[7], sd[7];
+    errorsAndSigmas(est, truth, v, sd);
     for (int k = 0; k < 7; ++k) {
       t.error[seed][static_cast<size_t>(k)] = v[k];
       t.sigma[seed][static_cast<size_t>(k)] = sd[k];
@@ -187,6 +220,17 @@ int main(int argc, char** argv) {
                 name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], e.nees7,
                 r ? 100.0 * r->fixRate() : NAN, r ? r->wall_time_s : NAN);
   };
+  std::FILE* box = box_csv.empty() ? nullptr : std::fopen(box_csv.c_str(), "w");
+  if (!box_csv.empty() && !box) {
+    std::cerr << box_csv << ": cannot open for writing\n";
+    return 1;
+  }
+  if (box) {
+    std::fprintf(box, "seed,estimator,scheme,t_s");
+    for (const char* q : {"x", "y", "roll_deg", "pitch_deg", "yaw_deg", "s_v", "s_w"})
+      std::fprintf(box, ",err_%s,sd_%s", q, q);
+    std::fprintf(box, "\n");
+  }
   for (int seed = first; seed < first + seeds; ++seed) {
     std::filesystem::remove_all(work);
     const giocal::sim::SimulatedLogs logs =
@@ -199,18 +243,45 @@ int main(int argc, char** argv) {
     guess.calib = in.description.initial_calibration.mean;
     guess.cov = giocal::priorCalibrationCovariance(in.description.initial_calibration);
     score(seed, "guess", guess, in.truth->calib, nullptr);
-    for (const auto& [name, run] : estimators) {
-      giocal::CalibrationRun r;
-      try {
-        r = run(in, options);
-      } catch (const std::exception& e) {
-        std::printf("%-6d %-4s failed: %s\n", seed, name.c_str(), e.what());
-        ++tally[name].failures;
-        continue;
+    const double t0 = in.rover.epochs.front().t;
+    for (const std::string& scheme : schemes) {
+      giocal::CalibrationInputs in_s = in;
+      giocal::CalibrationOptions o = options;
+      if (scheme != "TC") {
+        // The paper's lever-arm error: 0.1 m per axis, held (LE-C) or estimated online (LE-OL).
+        in_s.description.p_b_g += Eigen::Vector3d::Constant(0.1);
+        o.estimate_p_b_g = scheme == "TC-LE-OL";
+        o.p_b_g_sigma = 0.1;
       }
-      score(seed, name, r.final(), in.truth->calib, &r);
+      for (const auto& [name, run] : estimators) {
+        const std::string key = scheme == "TC" ? name : name + " " + scheme;
+        giocal::CalibrationRun r;
+        giocal::RunRecording rec;
+        try {
+          r = run(in_s, o, &rec);
+        } catch (const std::exception& e) {
+          std::printf("%-6d %-4s failed: %s\n", seed, key.c_str(), e.what());
+          ++tally[key].failures;
+          continue;
+        }
+        score(seed, key, r.final(), in.truth->calib, &r);
+        if (box_csv.empty()) continue;
+        for (double at : {0.0, 60.0, 120.0}) {
+          // The latest estimate at that time; before the first one, the initial guess.
+          giocal::CalibrationEstimate est = guess;
+          for (const giocal::CalibrationEstimate& h : rec.history) {
+            if (h.t <= t0 + at + 1e-6) est = h;
+          }
+          double v[7], sd[7];
+          errorsAndSigmas(est, in.truth->calib, v, sd);
+          std::fprintf(box, "%d,%s,%s,%g", seed, name.c_str(), scheme.c_str(), at);
+          for (int k = 0; k < 7; ++k) std::fprintf(box, ",%.9g,%.9g", v[k], sd[k]);
+          std::fprintf(box, "\n");
+        }
+      }
     }
   }
+  if (box) std::fclose(box);
   std::filesystem::remove_all(work);
   std::printf(
       "\nMean absolute calibration errors over %d seeds (%s%s; gyro ARW %g deg/sqrt(h), bias %g "

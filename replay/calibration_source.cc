@@ -88,6 +88,17 @@ CalibrationSource readCalibrationSource(const std::string& source, const Calibra
     return s;
   }
   if (source == "guess") return {in.description.initial_calibration, "guess"};
+  // Another dataset's truth or initial guess (a calibration drive's, for a separate test drive).
+  if (source.rfind("truth:", 0) == 0) {
+    CalibrationSource s;
+    s.calibration.mean = readTruthCalibration(source.substr(6) + "/truth_calib.yaml").calib;
+    s.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
+    s.label = source;
+    return s;
+  }
+  if (source.rfind("guess:", 0) == 0) {
+    return {readDatasetDescription(source.substr(6)).initial_calibration, source};
+  }
   const size_t at = source.rfind('@');
   if (at != std::string::npos) {
     double seconds = 0.0;
@@ -116,8 +127,8 @@ CalibrationSource readCalibrationSource(const std::string& source, const Calibra
   }
   if (source.size() >= 5 && source.substr(source.size() - 5) == ".json") return fromSummary(source);
   throw std::runtime_error("--calibration " + source +
-                           ": expected <run>/summary.json, <calibration.csv>@<seconds>, truth or "
-                           "guess");
+                           ": expected <run>/summary.json, <calibration.csv>@<seconds>, truth, "
+                           "guess, truth:<dataset> or guess:<dataset>");
 }
 
 }  // namespace giocal

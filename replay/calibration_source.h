@@ -16,9 +16,9 @@ struct CalibrationSource {
 /// `source`: "<dir>/summary.json" (final values and covariance; the run's output set is checked),
 /// "<file>.csv@<seconds>" (the last row at or before that many seconds after the first rover
 /// epoch of the run that wrote it, from the summary.json beside it, else of `in`; covariance from
-/// its sigma columns), "truth" (truth_calib.yaml, no uncertainty) or
-/// "guess" (dataset.yaml's initial calibration and sigmas). Throws DataError or
-/// std::runtime_error saying what is wrong with it.
+/// its sigma columns), "truth" (truth_calib.yaml, no uncertainty), "guess" (dataset.yaml's
+/// initial calibration and sigmas), or "truth:<dataset>" / "guess:<dataset>" of another dataset.
+/// Throws DataError or std::runtime_error saying what is wrong with it.
 CalibrationSource readCalibrationSource(const std::string& source, const CalibrationInputs& in);
 
 }  // namespace giocal

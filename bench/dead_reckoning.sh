@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# The paper's field evaluation on the field preset: for each seed, calibrate on the field drive
+# (config/sim/field.yaml) with each scheme and estimator, take the calibration at the end of each
+# of its four scenes (open sky, few trees, more trees, building), and dead-reckon a separate test
+# drive of the same robot (bench/field_test_drive.yaml: another route, seed + 1000: new noise)
+# through 1000 s without GNSS after 100 s with it. Prints horizontal MAX and RMSE per scene and
+# scheme (mean over seeds), the initial guess, and the true calibration as the floor.
+# Usage: bench/dead_reckoning.sh [seed...]   (about 3 minutes per seed)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+giocal="$root/build/apps/giocal"
+seeds=("${@:-31 32 33}")
+read -r -a seeds <<< "${seeds[*]}"
+work="$(mktemp -d /tmp/giocal_dr.XXXXXX)"
+trap 'rm -rf "$work"' EXIT
+printf 'calibration:\n  ambiguity_resolution: 0\n' > "$work/war.yaml"
+scene_ends=(320 630 940 end)
+results="$work/results.csv"
+echo "seed,scheme,scene,max,rmse" > "$results"
+dr() {  # dr <seed> <scheme> <scene> <calibration source>
+  "$giocal" deadreckon --data "$work/test_$1" --calibration "$4" --start 100 --duration 1000 \
+    --out "$work/dr" --overwrite > /dev/null
+  python3 -c "import json,sys; s=json.load(open('$work/dr/summary.json')); \
+print('$1,$2,$3,%.3f,%.3f' % (s['horizontal_max_m'], s['horizontal_rmse_m']))" >> "$results"
+}
+for seed in "${seeds[@]}"; do
+  "$giocal" simulate --config "$root/config/sim/field.yaml" --out "$work/cal_$seed" \
+    --seed "$seed" > /dev/null
+  "$giocal" simulate --config "$root/bench/field_test_drive.yaml" --out "$work/test_$seed" \
+    --seed "$((seed + 1000))" > /dev/null
+  for scene in "${scene_ends[@]}"; do
+    dr "$seed" truth "$scene" "truth:$work/cal_$seed"
+    dr "$seed" guess "$scene" "guess:$work/cal_$seed"
+  done
+  for est in ekf fgo; do
+    for scheme in TC-WAR TC-AR; do
+      config=""
+      [ "$scheme" = TC-WAR ] && config="--config $work/war.yaml"
+      # shellcheck disable=SC2086
+      "$giocal" calibrate --data "$work/cal_$seed" --estimator "$est" $config \
+        --out "$work/run" --overwrite > /dev/null
+      for scene in "${scene_ends[@]}"; do
+        if [ "$scene" = end ]; then source="$work/run/summary.json"
+        else source="$work/run/calibration.csv@$scene"; fi
+        dr "$seed" "$scheme-$est" "$scene" "$source"
+      done
+    done
+  done
+  echo "seed $seed done" >&2
+done
+python3 - "$results" <<'PY'
+import csv, sys, collections
+rows = list(csv.DictReader(open(sys.argv[1])))
+seeds = sorted({r["seed"] for r in rows})
+scenes = ["320", "630", "940", "end"]
+names = {"320": "open sky", "630": "few trees", "940": "more trees", "end": "building"}
+schemes = ["guess", "TC-WAR-ekf", "TC-AR-ekf", "TC-WAR-fgo", "TC-AR-fgo", "truth"]
+v = collections.defaultdict(list)
+for r in rows:
+    v[(r["scheme"], r["scene"])].append((float(r["max"]), float(r["rmse"])))
+print("dead reckoning of the test drive, 1000 s without GNSS; horizontal MAX / RMSE [m], mean of "
+      "seeds %s; calibration taken at the end of each scene of the calibration drive" % " ".join(seeds))
+print("%-12s" % "scheme" + "".join("%22s" % names[s] for s in scenes))
+for sc in schemes:
+    cells = []
+    for s in scenes:
+        x = v[(sc, s)]
+        cells.append("%22s" % ("%.2f / %.2f" % (sum(a for a, _ in x) / len(x), sum(b for _, b in x) / len(x))))
+    print("%-12s" % sc + "".join(cells))
+print("TC-AR MAX against the true calibration's (target <= 1.1), per scene:")
+for est in ["ekf", "fgo"]:
+    ratios = []
+    for s in scenes:
+        ar = sum(a for a, _ in v[("TC-AR-" + est, s)]) / len(seeds)
+        tr = sum(a for a, _ in v[("truth", s)]) / len(seeds)
+        ratios.append("%22.2f" % (ar / tr))
+    print("%-12s" % ("TC-AR-" + est) + "".join(ratios))
+print("TC-AR better than TC-WAR (MAX), per scene:")
+for est in ["ekf", "fgo"]:
+    cells = []
+    for s in scenes:
+        ar = sum(a for a, _ in v[("TC-AR-" + est, s)])
+        war = sum(a for a, _ in v[("TC-WAR-" + est, s)])
+        cells.append("%22s" % ("yes" if ar < war else "no"))
+    print("%-12s" % est + "".join(cells))
+PY
