@@ -68,8 +68,11 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   }
   replay.stop = job.stop;
   OutputSet outputs(job.out);
-  LiveRunWriter writer(outputs, "", job.estimator, log);
+  const auto span = datasetTimeSpan(job.data);
+  ProgressLine progress("calibrate " + job.estimator, span.first, span.second, job.quiet);
+  LiveRunWriter writer(outputs, "", job.estimator, log, &progress);
   const CalibrationRun run = replayFolder(job.data, replay, &writer);
+  progress.clear();
   const std::optional<TruthCalibration> truth = readFolderTruth(job.data);
   writer.finish(run, truth ? &truth->calib : nullptr);
   outputs.commit();

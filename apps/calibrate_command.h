@@ -12,6 +12,7 @@ namespace giocal {
 struct CalibrateJob {
   std::string data, estimator = "ekf", config, out;
   bool overwrite = false;
+  bool quiet = false;                 // no progress line
   const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };
 

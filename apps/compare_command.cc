@@ -42,10 +42,14 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
   CalibrationRun runs[2];
   const char* estimators[2] = {"ekf", "fgo"};
+  const auto span = datasetTimeSpan(job.data);
   for (int a = 0; a < 2; ++a) {
     replay.estimator = estimators[a];
-    LiveRunWriter writer(outputs, std::string(estimators[a]) + "/", estimators[a], log);
+    ProgressLine progress(std::string("compare ") + estimators[a], span.first, span.second,
+                          job.quiet);
+    LiveRunWriter writer(outputs, std::string(estimators[a]) + "/", estimators[a], log, &progress);
     runs[a] = replayFolder(job.data, replay, &writer);
+    progress.clear();
     writer.finish(runs[a], truth);
   }
 

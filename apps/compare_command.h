@@ -12,6 +12,7 @@ namespace giocal {
 struct CompareJob {
   std::string data, config, out;  // out empty: <data>/giocal_compare
   bool overwrite = false;
+  bool quiet = false;                 // no progress line
   const StopRequest* stop = nullptr;  // Ctrl-C: the runs stop and nothing is written
 };
 

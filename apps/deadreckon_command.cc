@@ -6,6 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "apps/progress_line.h"
 #include "common/io/output_set.h"
 #include "common/math/rotation.h"
 #include "replay/calibration_source.h"
@@ -55,7 +56,14 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
     reference_path = in.description.pathOf(in.description.truth);
   }
   const ReferenceTrajectory reference(readTruthCsv(reference_path));
+  ProgressLine progress("deadreckon", in.imu.front().t,
+                        in.rover.epochs.front().t + job.start_s + job.duration_s, job.quiet);
+  dr.progress = [&](double t) {
+    progress.update(t);
+    checkStop(job.stop);
+  };
   const DeadReckoning r = deadReckon(in, reference, dr);
+  progress.clear();
   checkStop(job.stop);
 
   OutputSet outputs(job.out);

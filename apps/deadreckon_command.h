@@ -13,6 +13,7 @@ struct DeadReckonJob {
   std::string data, calibration, reference, config, out;  // reference empty: the dataset's truth
   double start_s = 100.0, duration_s = 1000.0;
   bool overwrite = false;
+  bool quiet = false;  // no progress line
   const StopRequest* stop = nullptr;
 };
 

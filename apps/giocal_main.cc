@@ -29,13 +29,15 @@ const char* kUsage =
     "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir> "
-    "[--overwrite]\n"
-    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite]\n"
+    "[--overwrite] [--quiet]\n"
+    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite] [--quiet]\n"
     "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
     "guess>\n"
     "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv>] "
     "[--config <yaml>]\n"
-    "                   --out <dir> [--overwrite]\n";
+    "                   --out <dir> [--overwrite] [--quiet]\n"
+    "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
+    "  terminal; --quiet turns that off)\n";
 
 int runCheckCommand(int argc, char** argv) {
   po::options_description opts("giocal check");
@@ -102,7 +104,7 @@ int runCalibrateCommand(int argc, char** argv) {
       "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
       "config", po::value<std::string>()->default_value(""), "YAML configuration")(
       "out", po::value<std::string>()->required(), "output folder")(
-      "overwrite", "replace existing outputs in --out");
+      "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, opts), vm);
   po::notify(vm);
@@ -112,6 +114,7 @@ int runCalibrateCommand(int argc, char** argv) {
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;
+  job.quiet = vm.count("quiet") != 0;
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   giocal::runCalibrate(job, std::cout);
@@ -123,7 +126,7 @@ int runCompareCommand(int argc, char** argv) {
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
       "config", po::value<std::string>()->default_value(""), "YAML configuration")(
       "out", po::value<std::string>()->default_value(""), "output folder")(
-      "overwrite", "replace existing outputs in --out");
+      "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, opts), vm);
   po::notify(vm);
@@ -132,6 +135,7 @@ int runCompareCommand(int argc, char** argv) {
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;
+  job.quiet = vm.count("quiet") != 0;
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   giocal::runCompare(job, std::cout);
@@ -150,7 +154,7 @@ int runDeadReckonCommand(int argc, char** argv) {
       "reference trajectory (default: the dataset's truth.csv)")(
       "config", po::value<std::string>()->default_value(""), "YAML configuration")(
       "out", po::value<std::string>()->required(), "output folder")(
-      "overwrite", "replace existing outputs in --out");
+      "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, opts), vm);
   po::notify(vm);
@@ -163,6 +167,7 @@ int runDeadReckonCommand(int argc, char** argv) {
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;
+  job.quiet = vm.count("quiet") != 0;
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   giocal::runDeadReckon(job, std::cout);

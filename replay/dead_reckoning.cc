@@ -72,6 +72,7 @@ DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory&
     const double t = std::min(t_odo, t_gnss);
     if (t > out.t_start) break;
     if (t_odo <= t_gnss) {
+      if (job.progress) job.progress(t);
       if (t > filter.time()) filter.updateOdometer(in.odom[k]);
       ++k;
     } else {
@@ -109,6 +110,7 @@ DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory&
   };
   for (; k < in.odom.size() && in.odom[k].t <= out.t_end; ++k) {
     emitUpTo(in.odom[k].t);
+    if (job.progress) job.progress(in.odom[k].t);
     if (in.odom[k].t > filter.time()) filter.updateOdometer(in.odom[k]);
   }
   filter.propagateTo(out.t_end);

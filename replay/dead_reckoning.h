@@ -4,6 +4,7 @@
 // what a calibration is worth).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ struct DeadReckoningJob {
   double duration_s = 1000.0;    // outage length (cut at the end of the data or the reference)
   CalibrationPrior calibration;  // the calibration used, held; its covariance enters as consider
   CalibrationOptions options;
+  std::function<void(double)> progress;  // called with the data time reached (may throw to stop)
 };
 
 struct DeadReckoningError {

@@ -1,5 +1,6 @@
 #include "common/io/csv_table.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -126,6 +127,37 @@ void writeCsvTable(const std::string& path, const std::vector<std::string>& head
     out << '\n';
   }
   file.commit();
+}
+
+namespace {
+std::optional<double> leadingNumber(const std::string& line) {
+  if (line.empty() || line[0] == '#') return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(line.c_str(), &end);
+  if (end == line.c_str() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+}  // namespace
+
+std::optional<std::pair<double, double>> csvTimeSpan(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string line;
+  std::getline(in, line);  // header
+  std::optional<double> first;
+  while (!first && std::getline(in, line)) first = leadingNumber(line);
+  if (!first) return std::nullopt;
+  in.clear();
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  in.seekg(std::max<std::streamoff>(0, size - 4096));
+  std::optional<double> last;
+  std::getline(in, line);  // most likely a partial line
+  while (std::getline(in, line)) {
+    if (const std::optional<double> v = leadingNumber(line)) last = v;
+  }
+  if (!last || *last < *first) return std::nullopt;
+  return std::make_pair(*first, *last);
 }
 
 }  // namespace giocal

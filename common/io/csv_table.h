@@ -3,7 +3,9 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace giocal {
@@ -50,6 +52,10 @@ class CsvRowReader {
 /// skipped. Throws DataError naming the file, the line and the problem.
 CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& header,
                       const std::vector<ColumnRange>& ranges);
+
+/// The times of the first and the last row of a CSV file whose first column is time, read from its
+/// beginning and its end only (for progress reports); nullopt when they cannot be read.
+std::optional<std::pair<double, double>> csvTimeSpan(const std::string& path);
 
 /// Writes the header and rows atomically with enough digits to round-trip doubles.
 void writeCsvTable(const std::string& path, const std::vector<std::string>& header,

@@ -89,6 +89,8 @@ TEST(InterruptedOutputs, ARunStoppedWhileWritingLeavesTheEarlierSetWholeAndNoTem
   // A complete EKF run: summary.json names the files with their sizes.
   ASSERT_EQ(waitExit(spawnGiocal(calibrate, dir.file("ekf.log"))), 0)
       << contentOf(dir.file("ekf.log"));
+  // Piped, the run shows no progress line (ProgressLine draws only on a terminal).
+  EXPECT_EQ(contentOf(dir.file("ekf.log")).find("of the data"), std::string::npos);
   const auto files = verifyOutputSet(out + "/summary.json");
   EXPECT_EQ(files.size(), 2u);
   EXPECT_EQ(files.count("calibration.csv"), 1u);

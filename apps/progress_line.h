@@ -1,0 +1,35 @@
+// ProgressLine: one self-overwriting line on standard error while long work runs (share of the
+// data's time done, elapsed, remaining), only when standard error is a terminal and not --quiet.
+#pragma once
+
+#include <string>
+
+namespace giocal {
+
+class ProgressLine {
+ public:
+  /// Reports data times from t_begin to t_end; disabled when `quiet`, when standard error is not
+  /// a terminal, or when the span is empty.
+  ProgressLine(std::string label, double t_begin, double t_end, bool quiet);
+  ~ProgressLine() { clear(); }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  /// The work has reached data time t (redrawn at most 5 times a second).
+  void update(double t);
+  /// Erases the line (before other output, and at the end).
+  void clear();
+  bool enabled() const { return enabled_; }
+
+ private:
+  std::string label_;
+  double t_begin_, t_end_;
+  bool enabled_;
+  bool shown_ = false;
+  double started_, last_drawn_ = -1.0;
+};
+
+/// The time span of a dataset folder's IMU log (for a ProgressLine); {0, 0} when unknown.
+std::pair<double, double> datasetTimeSpan(const std::string& folder);
+
+}  // namespace giocal
