@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -32,7 +34,8 @@ void AtomicFile::commit() {
   if (!out_) throw std::runtime_error(path_ + ": write failed");
   out_.close();
   if (std::rename(tmp_path_.c_str(), path_.c_str()) != 0) {
-    throw std::runtime_error(path_ + ": cannot rename temporary file into place");
+    throw std::runtime_error(path_ + ": cannot rename temporary file into place: " +
+                             std::strerror(errno));
   }
   committed_ = true;
 }

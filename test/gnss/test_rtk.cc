@@ -4,9 +4,12 @@
 
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/dd_epoch.h"
+#include "common/gnss/pos_file.h"
+#include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/gnss/rtk_job.h"
+#include "common/io/data_error.h"
 #include "common/math/rotation.h"
 #include "temp_dir.h"
 
@@ -129,6 +132,59 @@ TEST(Rtk, BadInputIsReported) {
   EXPECT_THROW(parseBasePosition("1,2"), std::invalid_argument);
   EXPECT_THROW(parseBasePosition("1,2,3"), std::invalid_argument);
   EXPECT_NO_THROW(parseBasePosition("-3978241.958,3382840.234,3649900.853"));
+}
+
+TEST(PosFile, ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances) {
+  // RTKLIB's reference solution of the GSI set (rnx2rtkp) and giocal's mosaic solution with
+  // velocities appended: every row, the first as printed.
+  const std::vector<PositionFix> gsi =
+      readPosFile(kData + "gsi-static-0759-3040/rtklib_reference.pos");
+  ASSERT_EQ(gsi.size(), 115u);
+  const Geodetic g = geodeticFromEcef(gsi.front().p_e);
+  EXPECT_NEAR(g.lat * kRadToDeg, 35.160865956, 1e-9);
+  EXPECT_NEAR(g.h, 68.3784, 1e-6);
+  EXPECT_EQ(gsi.front().quality, 1);
+  EXPECT_EQ(gsi.front().satellites, 7);
+  EXPECT_NEAR(std::sqrt(gsi.front().cov_enu(1, 1)), 0.0058, 1e-12);  // sdn
+  EXPECT_NEAR(gsi.front().cov_enu(0, 2), -0.0047 * 0.0047, 1e-12);   // sdeu signed
+  EXPECT_NEAR(gsi[1].t - gsi[0].t, 30.0, 1e-9);
+  EXPECT_EQ(readPosFile(kData + "mosaic-static-nagoya/rover_rtk.pos").size(), 301u);
+
+  // giocal's writer and reader agree to the printed digits.
+  test::TempDir dir;
+  RtkSolution s;
+  s.t = 1403252430.0;
+  s.quality = 2;
+  s.satellites = 9;
+  s.p_e = ecefFromGeodetic({0.6132, 2.3906, 57.0});
+  const Eigen::Matrix3d R = rotationEcefFromEnu(0.6132, 2.3906);
+  Eigen::Matrix3d Q_enu;
+  Q_enu << 0.04, 0.01, -0.005, 0.01, 0.09, 0.002, -0.005, 0.002, 0.25;
+  s.cov_e = R * Q_enu * R.transpose();
+  writePosFile(dir.file("a.pos"), {}, {s});
+  const std::vector<PositionFix> back = readPosFile(dir.file("a.pos"));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_NEAR(back[0].t, s.t, 1e-3);
+  EXPECT_LT((back[0].p_e - s.p_e).norm(), 1e-3);
+  EXPECT_LT((back[0].cov_enu - Q_enu).norm(), 1e-4);
+  EXPECT_EQ(back[0].quality, 2);
+
+  // Bad rows name the file and line.
+  for (const std::string& bad :
+       {std::string("2024/13/01 00:00:00.000 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n"),
+        std::string("2024/06/01 00:00:00.000 35 136 50 9 7 0.1 0.1 0.1 0 0 0\n"),
+        std::string("2024/06/01 00:00:00.000 35 136 50 1 7 -0.1 0.1 0.1 0 0 0\n"),
+        std::string("2024/06/01 00:00:00.000 35 136 50 1 7 0.1 0.1 nan 0 0 0\n"),
+        std::string("2024/06/01 00:00:00.000 35 136\n"),
+        std::string("2316 1e99 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n")}) {
+    dir.write("bad.pos", "% header\n" + bad);
+    try {
+      readPosFile(dir.file("bad.pos"));
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const DataError& e) {
+      EXPECT_EQ(e.line(), 2) << e.what();
+    }
+  }
 }
 
 }  // namespace

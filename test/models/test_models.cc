@@ -15,6 +15,7 @@
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
+#include "common/models/position_model.h"
 #include "common/models/prior_model.h"
 #include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
@@ -115,6 +116,8 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
           std::make_shared<HeadingChangeModel>(0.001),
           std::make_shared<AmbiguityFixModel>(fixes, 1e-3),
           std::make_shared<ZuptModel>(0.01),
+          std::make_shared<PositionModel>(Vec3(3.0, -2.0, 1.0),
+                                          Eigen::Vector3d(0.01, 0.02, 0.05).asDiagonal()),
           std::make_shared<NhcModel>(Vec3(0.1, -0.2, 0.5), 0.05),
           std::make_shared<ImuPreintegrationModel>(imu),
           std::make_shared<OdometerPreintegrationModel>(odo),

@@ -1,0 +1,25 @@
+// Reader of RTKLIB-style solution files (.pos, giocal rtk's or RTKLIB's rnx2rtkp's with
+// latitude/longitude/height output): '%' header lines, then per epoch the GPST time
+// ("yyyy/mm/dd hh:mm:ss.sss" or "week tow"), lat lon height, Q, ns and the ENU standard
+// deviations with their signed-square-root covariances.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace giocal {
+
+struct PositionFix {
+  double t = 0.0;                                         // GPS seconds
+  Eigen::Vector3d p_e = Eigen::Vector3d::Zero();          // ECEF [m]
+  Eigen::Matrix3d cov_enu = Eigen::Matrix3d::Identity();  // at the position [m^2]
+  int quality = 0;                                        // 1 fix, 2 float, 5 single (RTKLIB's Q)
+  int satellites = 0;
+};
+
+/// Throws DataError naming the file, line and field for anything it cannot read; the times
+/// must increase.
+std::vector<PositionFix> readPosFile(const std::string& path);
+
+}  // namespace giocal

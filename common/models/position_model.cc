@@ -1,0 +1,24 @@
+#include "common/models/position_model.h"
+
+#include "common/math/so3.h"
+#include "common/models/block_values.h"
+
+namespace giocal {
+
+const std::vector<StateBlock>& PositionModel::blocks() const {
+  static const std::vector<StateBlock> kBlocks{vectorBlock(block::kP), rotationBlock(block::kQ),
+                                               vectorBlock("p_b_g")};
+  return kBlocks;
+}
+
+void PositionModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
+                             std::vector<Eigen::MatrixXd>* jacobians) const {
+  const Vec3 p_n_b = vec3At(params[0]);
+  const Mat3 R_n_b = quatAt(params[1]).toRotationMatrix();
+  const Vec3 p_b_g = vec3At(params[2]);
+  residual = p_n_b + R_n_b * p_b_g - z_;
+  // Right perturbation q Exp(theta): R (I + [theta]x) p_b_g = R p_b_g - R [p_b_g]x theta.
+  if (jacobians) *jacobians = {Mat3::Identity(), -R_n_b * skew(p_b_g), R_n_b};
+}
+
+}  // namespace giocal

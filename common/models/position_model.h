@@ -1,0 +1,26 @@
+// PositionModel: a GNSS position solution of the antenna (the loosely coupled scheme), through the
+// lever arm: residual = p_n_b + R_n_b p_b_g - p_n_antenna.
+#pragma once
+
+#include "common/models/measurement_model.h"
+
+namespace giocal {
+
+class PositionModel : public MeasurementModel {
+ public:
+  /// The antenna position in n and its covariance in n.
+  PositionModel(const Eigen::Vector3d& p_n_antenna, const Eigen::Matrix3d& covariance_n)
+      : z_(p_n_antenna), cov_(covariance_n) {}
+  std::string name() const override { return "position"; }
+  const std::vector<StateBlock>& blocks() const override;  // p_n_b, q_n_b, p_b_g
+  int residualSize() const override { return 3; }
+  void evaluate(const double* const* params, Eigen::VectorXd& residual,
+                std::vector<Eigen::MatrixXd>* jacobians) const override;
+  Eigen::MatrixXd covariance() const override { return cov_; }
+
+ private:
+  Eigen::Vector3d z_;
+  Eigen::Matrix3d cov_;
+};
+
+}  // namespace giocal
