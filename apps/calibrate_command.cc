@@ -57,6 +57,8 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   const GiocalConfig config = readGiocalConfig(job.config);
   replay.options = config.calibration;
   replay.fgo_options = config.fgo;
+  replay.positions = job.positions;
+  replay.options.loosely_coupled = !job.positions.empty();
   coreFactory(job.estimator, replay.options);  // an unknown estimator fails before any output
   if (!job.overwrite) {
     for (const std::string& f : calibrationOutputFiles()) {

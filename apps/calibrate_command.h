@@ -13,6 +13,7 @@ struct CalibrateJob {
   std::string data, estimator = "ekf", config, out;
   bool overwrite = false;
   bool quiet = false;                 // no progress line
+  std::string positions;              // --gnss lc --pos <file.pos>: the LC scheme
   const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };
 

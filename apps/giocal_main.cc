@@ -28,8 +28,8 @@ const char* kUsage =
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
-    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--config <yaml>] --out <dir> "
-    "[--overwrite] [--quiet]\n"
+    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--gnss tc|lc --pos <file.pos>]\n"
+    "                   [--config <yaml>] --out <dir> [--overwrite] [--quiet]\n"
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite] [--quiet]\n"
     "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
     "guess>\n"
@@ -102,6 +102,9 @@ int runCalibrateCommand(int argc, char** argv) {
   po::options_description opts("giocal calibrate");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
       "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
+      "gnss", po::value<std::string>()->default_value("tc"),
+      "tc: double differences (tightly coupled); lc: position solutions (--pos)")(
+      "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file")(
       "config", po::value<std::string>()->default_value(""), "YAML configuration")(
       "out", po::value<std::string>()->required(), "output folder")(
       "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
@@ -111,6 +114,12 @@ int runCalibrateCommand(int argc, char** argv) {
   giocal::CalibrateJob job;
   job.data = vm["data"].as<std::string>();
   job.estimator = vm["estimator"].as<std::string>();
+  const std::string gnss = vm["gnss"].as<std::string>();
+  if (gnss != "tc" && gnss != "lc") throw po::error("--gnss must be tc or lc, not '" + gnss + "'");
+  if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
+    throw po::error("--gnss lc needs --pos <file.pos>, and --pos only goes with --gnss lc");
+  }
+  job.positions = vm["pos"].as<std::string>();
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 
+#include "common/gnss/spp.h"
 #include "common/io/text.h"
+#include "common/models/position_model.h"
+#include "ekf/imu_propagation.h"
 
 namespace giocal {
 namespace {
@@ -20,6 +23,7 @@ bool finiteState(const StateRegistry& s) {
 EkfCore::EkfCore(const CalibrationOptions& options, const CalibrationInputs& sensors,
                  const BroadcastOrbits& orbits, const InitialState& init)
     : options_(options),
+      sensors_(sensors),
       filter_(options, sensors.description, sensors.imu, init),
       gnss_(orbits, sensors.base_e, options),
       next_output_(init.x.t) {}
@@ -39,7 +43,27 @@ void EkfCore::odometer(const OdomSample& sample, CalibrationRun& run) {
            "q_b_m was increased by the prior's (counter calibration_reopened)");
 }
 
+EpochOutcome EkfCore::position(double t, CalibrationRun& run) {
+  EpochOutcome out;
+  const PositionFix* fix = fixAt(sensors_.positions, t, kPositionTolerance);
+  if (!fix) return out;
+  filter_.propagateTo(t);
+  const PositionModel model = positionModelOf(filter_.frame(), *fix);
+  out.used = filter_
+                 .update(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg},
+                         chi2Quantile(options_.chi2_probability, 3))
+                 .accepted;
+  run.count(Counter::kGnssRowsRejected, out.used ? 0 : 3);
+  out.diverged = !finiteState(filter_.state());
+  if (out.diverged) return out;
+  out.fixed = out.used && fix->quality == 1;
+  out.recorded = true;
+  out.estimate = filter_.calibration();
+  return out;
+}
+
 EpochOutcome EkfCore::gnss(const ObsEpoch& rover, const ObsEpoch& base, CalibrationRun& run) {
+  if (options_.loosely_coupled) return position(rover.t, run);
   const GnssEpochReport rep = gnss_.process(filter_, rover, base);
   run.count(Counter::kDdRows, rep.dd_rows);
   run.count(Counter::kGnssRowsRejected, rep.rejected_rows);

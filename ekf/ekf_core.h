@@ -26,7 +26,11 @@ class EkfCore : public EstimatorCore {
   double oldestSampleNeeded() const override;
 
  private:
+  /// The LC scheme's epoch: the antenna position solution at the rover epoch's time, if any.
+  EpochOutcome position(double t, CalibrationRun& run);
+
   CalibrationOptions options_;
+  const CalibrationInputs& sensors_;
   CalibrationFilter filter_;
   GnssUpdate gnss_;
   double next_output_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/gnss/spp.h"
 #include "common/imu/gyro_mean.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/math/rotation.h"
@@ -11,6 +12,7 @@
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
+#include "common/models/position_model.h"
 #include "common/models/prior_model.h"
 #include "common/models/random_walk_model.h"
 #include "common/models/standstill_projection.h"
@@ -283,14 +285,30 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
                   0.0,
                   "nhc"});
   }
-  gnssFactors(e, rover, base);
+  const PositionFix* fix = nullptr;
+  if (o_.loosely_coupled) {
+    fix = fixAt(in_.positions, e.t, kPositionTolerance);
+    if (fix) {
+      w_.addFactor({std::make_shared<PositionModel>(positionModelOf(frame_, *fix)),
+                    {e.p, e.q, kPbg},
+                    0.0,
+                    tagged("position", e.k)});
+    }
+  } else {
+    gnssFactors(e, rover, base);
+  }
   epochs_.push_back(e);
   FgoEpoch& cur = epochs_.back();
   w_.solve(fo_.max_iterations);
   for (int r = 0; r < fo_.max_rejections && rejectWorstRow(cur); ++r) w_.solve(fo_.max_iterations);
+  if (fix && rejectPosition(cur, *fix)) {
+    fix = nullptr;
+    w_.solve(fo_.max_iterations);
+  }
   EpochOutcome out;
-  out.used = true;
-  out.fixed = o_.ambiguity_resolution && resolve(cur);
+  out.used = !o_.loosely_coupled || fix;
+  out.fixed =
+      o_.loosely_coupled ? fix && fix->quality == 1 : o_.ambiguity_resolution && resolve(cur);
   run_->count(Counter::kDdRows, static_cast<long>(cur.code_rows.size() + cur.phase_rows.size()));
   out.recorded = true;
   out.estimate = estimate(cur);
@@ -298,6 +316,20 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   if (static_cast<int>(epochs_.size()) > fo_.window) marginalizeOldest();
   run_ = nullptr;
   return out;
+}
+
+bool FactorGraphCore::rejectPosition(const FgoEpoch& e, const PositionFix& fix) {
+  // As the EKF's gate, on the solved window: a solution this far off (a wrong fix under trees)
+  // leaves the window instead of pulling it.
+  const PositionModel model = positionModelOf(frame_, fix);
+  const double* params[3] = {w_.value(e.p).data(), w_.value(e.q).data(), w_.value(kPbg).data()};
+  Eigen::VectorXd r;
+  model.evaluate(params, r, nullptr);
+  if (r.dot(model.covariance().ldlt().solve(r)) <= chi2Quantile(o_.chi2_probability, 3))
+    return false;
+  w_.removeFactors(tagged("position", e.k));
+  run_->count(Counter::kGnssRowsRejected, 3);
+  return true;
 }
 
 void FactorGraphCore::trajectoryUpTo(double t, const std::function<void(const TruthSample&)>& out) {

@@ -71,6 +71,9 @@ class FactorGraphCore : public EstimatorCore {
   // GNSS factors (fgo/factor_graph_gnss.cc).
   void gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsEpoch& base);
   void addGnssRowFactors(const FgoEpoch& e);
+  /// The LC scheme's position factor of epoch e removed when its solved residual fails the
+  /// chi-square gate (calibration.chi2_probability); true when it was.
+  bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
   std::string ambiguityVar(const SatId& sat, char band) const;
   void newAmbiguity(const SatId& sat, char band, double value, double lambda);
   std::vector<std::string> phaseVars(const DdGnssModel& model,

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 
+#include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
 #include "common/io/sensor_logs.h"
@@ -109,6 +110,13 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
       readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
   streams.push_back(
       readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
+  std::vector<PositionFix> positions;  // a solution file is small: read whole
+  if (!job.positions.empty()) {
+    positions = readPosFile(job.positions);
+    if (positions.empty()) throw DataError(job.positions, 0, "no position solutions");
+    streams.push_back(
+        vectorStream<PositionFix>(positions, [&c](const PositionFix& p) { c.addPosition(p); }));
+  }
   merge(streams, job.stop);
   if (streams[0].count < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (streams[1].count == 0) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
@@ -137,6 +145,8 @@ CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, R
       vectorStream<ObsEpoch>(in.rover.epochs, [&c](const ObsEpoch& e) { c.addRover(e); }));
   streams.push_back(
       vectorStream<ObsEpoch>(in.base.epochs, [&c](const ObsEpoch& e) { c.addBase(e); }));
+  streams.push_back(
+      vectorStream<PositionFix>(in.positions, [&c](const PositionFix& p) { c.addPosition(p); }));
   merge(streams, job.stop);
   c.finish();
   return c.run();

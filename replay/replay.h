@@ -17,6 +17,7 @@ struct ReplayJob {
   CalibrationOptions options;
   FgoOptions fgo_options;
   const StopRequest* stop = nullptr;  // when requested, the replay throws Interrupted
+  std::string positions;  // the LC scheme's .pos file (options.loosely_coupled), else empty
 };
 
 /// Reads the folder's files sample by sample while calibrating (memory does not grow with the

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/gnss/observation.h"
+#include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_nav.h"
 #include "common/imu/imu_sample.h"
 #include "common/io/dataset_description.h"
@@ -24,6 +25,7 @@ struct CalibrationInputs {
   NavData nav;
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   std::optional<TruthCalibration> truth;  // from truth_calib.yaml, if the folder has one
+  std::vector<PositionFix> positions;     // antenna position solutions (the LC scheme)
 
   /// Time span covered by both the IMU and the rover observations [s].
   double dataDuration() const;

@@ -63,6 +63,10 @@ struct CalibrationOptions {
   // Every calibration state held at its prior as a consider state (its covariance enters the
   // updates, it is never corrected): dead reckoning with a given calibration. Not a YAML key.
   bool hold_calibration = false;
+  // The paper's LC scheme: GNSS enters as the antenna position solutions pushed with the rover
+  // epochs (Calibrator::addPosition, calibrate --gnss lc --pos), not as double differences; the
+  // initial heading still comes from the raw observations. Not a YAML key.
+  bool loosely_coupled = false;
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale

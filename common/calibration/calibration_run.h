@@ -4,8 +4,8 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
@@ -42,13 +42,14 @@ struct CalibrationRun {
   std::string estimator;                      // "ekf" or "fgo"
   std::optional<CalibrationEstimate> latest;  // the newest calibration estimate
   double data_duration_s = 0.0;
-  double t_first_rover_epoch = NAN;  // data time the "seconds after the start" of outputs count from
-  double wall_time_s = 0.0;                      // estimator time, reading the files excluded
-  double load_time_s = 0.0;                      // reading and checking the dataset files
-  double t_initialized = 0.0;                    // time of the first estimated state
-  int gnss_epochs = 0;                           // rover epochs used with a base epoch
-  int fixed_epochs = 0;                          // of those, epochs with validated ambiguity fixes
-  std::string p_b_m_z;                           // how the unobservable p_b_m.z was treated
+  double t_first_rover_epoch =
+      NAN;                     // data time the "seconds after the start" of outputs count from
+  double wall_time_s = 0.0;    // estimator time, reading the files excluded
+  double load_time_s = 0.0;    // reading and checking the dataset files
+  double t_initialized = 0.0;  // time of the first estimated state
+  int gnss_epochs = 0;         // rover epochs used with a base epoch
+  int fixed_epochs = 0;        // of those, epochs with validated ambiguity fixes
+  std::string p_b_m_z;         // how the unobservable p_b_m.z was treated
   std::map<std::string, double> initialization;  // static window, heading baseline and sigma
   std::map<std::string, long> counters;          // Counter names -> tallies
   std::map<std::string, double> timing;          // wall time of parts of the run [s]

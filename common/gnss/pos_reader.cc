@@ -1,6 +1,7 @@
 #include "common/gnss/pos_reader.h"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +40,15 @@ double timeOf(const std::string& a, const std::string& b, const std::string& pat
 }
 
 }  // namespace
+
+const PositionFix* fixAt(const std::vector<PositionFix>& fixes, double t, double tolerance) {
+  auto it = std::lower_bound(fixes.begin(), fixes.end(), t,
+                             [](const PositionFix& f, double v) { return f.t < v; });
+  const PositionFix* best = nullptr;
+  if (it != fixes.end()) best = &*it;
+  if (it != fixes.begin() && (!best || t - (it - 1)->t < best->t - t)) best = &*(it - 1);
+  return best && std::abs(best->t - t) <= tolerance ? best : nullptr;
+}
 
 std::vector<PositionFix> readPosFile(const std::string& path) {
   std::ifstream in(path);

@@ -18,6 +18,12 @@ struct PositionFix {
   int satellites = 0;
 };
 
+/// How far in time a position solution may be from the rover epoch it stands for [s].
+constexpr double kPositionTolerance = 0.05;
+
+/// The fix within `tolerance` seconds of t (the nearest), or null. `fixes` in rising time.
+const PositionFix* fixAt(const std::vector<PositionFix>& fixes, double t, double tolerance);
+
 /// Throws DataError naming the file, line and field for anything it cannot read; the times
 /// must increase.
 std::vector<PositionFix> readPosFile(const std::string& path);

@@ -1,5 +1,7 @@
 #include "common/models/position_model.h"
 
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/pos_reader.h"
 #include "common/math/so3.h"
 #include "common/models/block_values.h"
 
@@ -19,6 +21,13 @@ void PositionModel::evaluate(const double* const* params, Eigen::VectorXd& resid
   residual = p_n_b + R_n_b * p_b_g - z_;
   // Right perturbation q Exp(theta): R (I + [theta]x) p_b_g = R p_b_g - R [p_b_g]x theta.
   if (jacobians) *jacobians = {Mat3::Identity(), -R_n_b * skew(p_b_g), R_n_b};
+}
+
+PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix) {
+  const Geodetic g = geodeticFromEcef(fix.p_e);
+  // ENU at the fix to n (the ENU frame at the origin): R_n_e R_e_enu.
+  const Mat3 R = frame.R_e_n().transpose() * rotationEcefFromEnu(g.lat, g.lon);
+  return PositionModel(frame.enuFromEcef(fix.p_e), R * fix.cov_enu * R.transpose());
 }
 
 }  // namespace giocal

@@ -6,6 +6,9 @@
 
 namespace giocal {
 
+struct PositionFix;
+class LocalFrame;
+
 class PositionModel : public MeasurementModel {
  public:
   /// The antenna position in n and its covariance in n.
@@ -22,5 +25,8 @@ class PositionModel : public MeasurementModel {
   Eigen::Vector3d z_;
   Eigen::Matrix3d cov_;
 };
+
+/// The model of a position solution (ECEF, ENU covariance at the fix) in the local frame n.
+PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix);
 
 }  // namespace giocal

@@ -83,6 +83,15 @@ void Calibrator::addBase(const ObsEpoch& e) {
   push(e.t, {Kind::kBase, {}, {}, e});
 }
 
+void Calibrator::addPosition(const PositionFix& p) {
+  BusyTimer busy(busy_s_);
+  if (!p.p_e.allFinite() || !p.cov_enu.allFinite()) {
+    dropped(Counter::kNonFiniteSamples, p.t, "position solution with NaN or infinite values");
+    return;
+  }
+  push(p.t, {Kind::kPosition, {}, {}, {}, p});
+}
+
 void Calibrator::addEphemeris(const Ephemeris& e) { orbits_->add(e); }
 
 void Calibrator::addNavigation(const NavData& nav) {
@@ -139,6 +148,15 @@ void Calibrator::release(Datum& d) {
       }
       buf_.odom.push_back(d.odom);
       frontier_ = d.odom.t;
+      break;
+    case Kind::kPosition:
+      if (!buf_.positions.empty() && d.position.t <= buf_.positions.back().t) {
+        dropped(Counter::kDuplicateSamples, d.position.t,
+                "position solution repeating the previous one's time");
+        return;
+      }
+      frontier_ = d.position.t;
+      buf_.positions.push_back(d.position);
       break;
     case Kind::kBase:
       if (!buf_.base.epochs.empty() && d.obs.t <= buf_.base.epochs.back().t) {

@@ -57,6 +57,9 @@ class Calibrator {
   void addOdometer(const OdomSample& s);
   void addRover(const ObsEpoch& e);
   void addBase(const ObsEpoch& e);
+  /// An antenna position solution (the LC scheme, options.loosely_coupled): used at the rover
+  /// epoch of the same time instead of that epoch's double differences.
+  void addPosition(const PositionFix& p);
   void addEphemeris(const Ephemeris& e);
   /// A navigation file's worth: its ephemerides and ionosphere parameters.
   void addNavigation(const NavData& nav);
@@ -70,12 +73,13 @@ class Calibrator {
   const CalibrationRun& run() const { return run_; }
 
  private:
-  enum class Kind { kImu, kOdometer, kRover, kBase };
+  enum class Kind { kImu, kOdometer, kRover, kBase, kPosition };
   struct Datum {
     Kind kind;
     ImuSample imu;
     OdomSample odom;
     ObsEpoch obs;
+    PositionFix position;
   };
   void push(double t, Datum d);
   void release(Datum& d);

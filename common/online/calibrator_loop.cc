@@ -237,6 +237,7 @@ void Calibrator::trim() {
   dropBefore(buf_.imu, keep);
   dropBefore(buf_.odom, keep);
   dropBefore(buf_.base.epochs, keep - options_.max_base_offset);
+  dropBefore(buf_.positions, keep - 1.0);
   if (!core_) {  // initializing: rover epochs before the search window are of no use
     while (!rover_.empty() && rover_.front().t < t_from_) rover_.pop_front();
   }
