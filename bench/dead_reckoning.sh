@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The paper's field evaluation on the field preset: for each seed, calibrate on the field drive
-# (config/sim/field.yaml) with each scheme and estimator, take the calibration at the end of each
+# (config/sim/field.yaml) with each scheme (LC from giocal rtk's solution, TC-WAR, TC-AR) and
+# estimator, take the calibration at the end of each
 # of its four scenes (open sky, few trees, more trees, building), and dead-reckon a separate test
 # drive of the same robot (bench/field_test_drive.yaml: another route, seed + 1000: new noise)
 # through 1000 s without GNSS after 100 s with it. Prints horizontal MAX and RMSE per scene and
@@ -28,14 +29,17 @@ for seed in "${seeds[@]}"; do
     --seed "$seed" > /dev/null
   "$giocal" simulate --config "$root/bench/field_test_drive.yaml" --out "$work/test_$seed" \
     --seed "$((seed + 1000))" > /dev/null
+  "$giocal" rtk --rover "$work/cal_$seed/rover.obs" --base "$work/cal_$seed/base.obs" \
+    --nav "$work/cal_$seed/nav.rnx" --out "$work/cal_$seed.pos" > /dev/null
   for scene in "${scene_ends[@]}"; do
     dr "$seed" truth "$scene" "truth:$work/cal_$seed"
     dr "$seed" guess "$scene" "guess:$work/cal_$seed"
   done
   for est in ekf fgo; do
-    for scheme in TC-WAR TC-AR; do
+    for scheme in LC TC-WAR TC-AR; do
       config=""
       [ "$scheme" = TC-WAR ] && config="--config $work/war.yaml"
+      [ "$scheme" = LC ] && config="--gnss lc --pos $work/cal_$seed.pos"
       # shellcheck disable=SC2086
       "$giocal" calibrate --data "$work/cal_$seed" --estimator "$est" $config \
         --out "$work/run" --overwrite > /dev/null
@@ -54,7 +58,8 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 seeds = sorted({r["seed"] for r in rows})
 scenes = ["320", "630", "940", "end"]
 names = {"320": "open sky", "630": "few trees", "940": "more trees", "end": "building"}
-schemes = ["guess", "TC-WAR-ekf", "TC-AR-ekf", "TC-WAR-fgo", "TC-AR-fgo", "truth"]
+schemes = ["guess", "LC-ekf", "TC-WAR-ekf", "TC-AR-ekf", "LC-fgo", "TC-WAR-fgo", "TC-AR-fgo",
+           "truth"]
 v = collections.defaultdict(list)
 for r in rows:
     v[(r["scheme"], r["scene"])].append((float(r["max"]), float(r["rmse"])))
@@ -75,12 +80,14 @@ for est in ["ekf", "fgo"]:
         tr = sum(a for a, _ in v[("truth", s)]) / len(seeds)
         ratios.append("%22.2f" % (ar / tr))
     print("%-12s" % ("TC-AR-" + est) + "".join(ratios))
-print("TC-AR better than TC-WAR (MAX), per scene:")
+print("TC-AR better than LC and TC-WAR (MAX), per scene:")
 for est in ["ekf", "fgo"]:
     cells = []
     for s in scenes:
         ar = sum(a for a, _ in v[("TC-AR-" + est, s)])
+        lc = sum(a for a, _ in v[("LC-" + est, s)])
         war = sum(a for a, _ in v[("TC-WAR-" + est, s)])
-        cells.append("%22s" % ("yes" if ar < war else "no"))
+        cells.append("%22s" % ("LC %s, WAR %s" % ("yes" if ar < lc else "no",
+                                                  "yes" if ar < war else "no")))
     print("%-12s" % est + "".join(cells))
 PY
