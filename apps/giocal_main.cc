@@ -39,12 +39,28 @@ const char* kUsage =
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
     "  terminal; --quiet turns that off)\n";
 
-int runCheckCommand(int argc, char** argv) {
-  po::options_description opts("giocal check");
-  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
+/// Parses and checks a sub-command's options.
+po::variables_map parsed(int argc, char** argv, const po::options_description& opts) {
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, opts), vm);
   po::notify(vm);
+  return vm;
+}
+
+/// The options every command that writes a run's outputs takes: config, out, overwrite, quiet.
+void addRunOutputOptions(po::options_description& opts, bool out_required) {
+  opts.add_options()("config", po::value<std::string>()->default_value(""), "YAML configuration")(
+      "out",
+      out_required ? po::value<std::string>()->required()
+                   : po::value<std::string>()->default_value(""),
+      "output folder")("overwrite", "replace existing outputs in --out")("quiet",
+                                                                         "no progress line");
+}
+
+int runCheckCommand(int argc, char** argv) {
+  po::options_description opts("giocal check");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
+  const po::variables_map vm = parsed(argc, argv, opts);
   giocal::runCheck(vm["data"].as<std::string>(), std::cout);
   std::cout << "ok\n";
   return 0;
@@ -55,9 +71,7 @@ int runSimulateCommand(int argc, char** argv) {
   opts.add_options()("config", po::value<std::string>()->required(), "simulator preset (YAML)")(
       "out", po::value<std::string>()->required(), "output dataset folder")(
       "seed", po::value<std::uint64_t>()->default_value(1), "random seed");
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, opts), vm);
-  po::notify(vm);
+  const po::variables_map vm = parsed(argc, argv, opts);
   const giocal::InterruptWatch interrupts;
   giocal::runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
                       vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
@@ -73,9 +87,7 @@ int runRtkCommand(int argc, char** argv) {
       "config", po::value<std::string>(), "YAML configuration")(
       "out", po::value<std::string>()->required(), "solution file (.pos)")(
       "overwrite", "replace --out if it exists");
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, opts), vm);
-  po::notify(vm);
+  const po::variables_map vm = parsed(argc, argv, opts);
   giocal::RtkJob job;
   job.rover = vm["rover"].as<std::string>();
   job.base = vm["base"].as<std::string>();
@@ -104,13 +116,9 @@ int runCalibrateCommand(int argc, char** argv) {
       "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
       "gnss", po::value<std::string>()->default_value("tc"),
       "tc: double differences (tightly coupled); lc: position solutions (--pos)")(
-      "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file")(
-      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
-      "out", po::value<std::string>()->required(), "output folder")(
-      "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, opts), vm);
-  po::notify(vm);
+      "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
+  addRunOutputOptions(opts, true);
+  const po::variables_map vm = parsed(argc, argv, opts);
   giocal::CalibrateJob job;
   job.data = vm["data"].as<std::string>();
   job.estimator = vm["estimator"].as<std::string>();
@@ -132,13 +140,9 @@ int runCalibrateCommand(int argc, char** argv) {
 
 int runCompareCommand(int argc, char** argv) {
   po::options_description opts("giocal compare");
-  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
-      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
-      "out", po::value<std::string>()->default_value(""), "output folder")(
-      "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, opts), vm);
-  po::notify(vm);
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
+  addRunOutputOptions(opts, false);
+  const po::variables_map vm = parsed(argc, argv, opts);
   giocal::CompareJob job;
   job.data = vm["data"].as<std::string>();
   job.config = vm["config"].as<std::string>();
@@ -160,13 +164,9 @@ int runDeadReckonCommand(int argc, char** argv) {
       "outage start, s after the first rover epoch")(
       "duration", po::value<double>()->default_value(1000.0), "outage length [s]")(
       "reference", po::value<std::string>()->default_value(""),
-      "reference trajectory (default: the dataset's truth.csv)")(
-      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
-      "out", po::value<std::string>()->required(), "output folder")(
-      "overwrite", "replace existing outputs in --out")("quiet", "no progress line");
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, opts), vm);
-  po::notify(vm);
+      "reference trajectory (default: the dataset's truth.csv)");
+  addRunOutputOptions(opts, true);
+  const po::variables_map vm = parsed(argc, argv, opts);
   giocal::DeadReckonJob job;
   job.data = vm["data"].as<std::string>();
   job.calibration = vm["calibration"].as<std::string>();
