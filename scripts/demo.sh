@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's main job: install, build, simulate the reference paper's dataset, check it, run RTK
-# on its GNSS data, then calibrate it with both estimators and print them side by side.
+# on its GNSS data, calibrate it with both estimators and print them side by side, then
+# dead-reckon through 100 s without GNSS with the initial guess and with the calibration.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh"
@@ -29,3 +30,9 @@ echo "== giocal calibrate --estimator ekf (initial guess in dataset.yaml, errors
 echo
 echo "== giocal compare: the EKF and the sliding-window factor graph on the same data"
 "$giocal" compare --data "$demo/paper" --out "$demo/compare"
+echo
+echo "== giocal deadreckon: what the calibration is worth (100 s without GNSS from +40 s)"
+"$giocal" deadreckon --data "$demo/paper" --calibration guess --start 40 --duration 100 \
+  --out "$demo/dr_guess"
+"$giocal" deadreckon --data "$demo/paper" --calibration "$demo/calib_ekf/summary.json" \
+  --start 40 --duration 100 --out "$demo/dr_ekf"
