@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "common/calibration/calibration_inputs.h"
 #include "common/io/stop_request.h"
@@ -13,6 +14,12 @@
 namespace giocal {
 
 struct ReplayJob {
+  ReplayJob() = default;
+  ReplayJob(std::string estimator_name, CalibrationOptions calibration, FgoOptions fgo)
+      : estimator(std::move(estimator_name)),
+        options(std::move(calibration)),
+        fgo_options(std::move(fgo)) {}
+
   std::string estimator = "ekf";
   CalibrationOptions options;
   FgoOptions fgo_options;
