@@ -67,15 +67,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   checkStop(job.stop);
 
   OutputSet outputs(job.out);
-  std::ostream& traj = outputs.open("trajectory.csv");
-  for (size_t i = 0; i < truthCsvHeader().size(); ++i)
-    traj << (i ? "," : "") << truthCsvHeader()[i];
-  traj << "\n" << std::setprecision(17);
-  for (const TruthSample& s : r.trajectory) {
-    const std::vector<double> row = truthCsvRow(s);
-    for (size_t i = 0; i < row.size(); ++i) traj << (i ? "," : "") << row[i];
-    traj << "\n";
-  }
+  writeTruthCsv(outputs.stagedPath("trajectory.csv"), r.trajectory);
   std::ostream& err = outputs.open("error.csv");
   err << "t,elapsed_s,distance_m,east_m,north_m,up_m,horizontal_m\n" << std::setprecision(12);
   for (const DeadReckoningError& e : r.errors) {

@@ -78,24 +78,19 @@ CalibrationSource fromCsvAt(const std::string& path, double seconds, double t0) 
 }  // namespace
 
 CalibrationSource readCalibrationSource(const std::string& source, const CalibrationInputs& in) {
-  if (source == "truth") {
-    if (!in.truth)
+  // The truth of this dataset or, after "truth:", of another (a calibration drive's).
+  if (source == "truth" || source.rfind("truth:", 0) == 0) {
+    if (source == "truth" && !in.truth)
       throw std::runtime_error("--calibration truth: the dataset has no truth_calib.yaml");
     CalibrationSource s;
-    s.calibration.mean = in.truth->calib;
-    s.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
-    s.label = "truth";
-    return s;
-  }
-  if (source == "guess") return {in.description.initial_calibration, "guess"};
-  // Another dataset's truth or initial guess (a calibration drive's, for a separate test drive).
-  if (source.rfind("truth:", 0) == 0) {
-    CalibrationSource s;
-    s.calibration.mean = readTruthCalibration(source.substr(6) + "/truth_calib.yaml").calib;
+    s.calibration.mean = source == "truth"
+                             ? in.truth->calib
+                             : readTruthCalibration(source.substr(6) + "/truth_calib.yaml").calib;
     s.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
     s.label = source;
     return s;
   }
+  if (source == "guess") return {in.description.initial_calibration, "guess"};
   if (source.rfind("guess:", 0) == 0) {
     return {readDatasetDescription(source.substr(6)).initial_calibration, source};
   }
