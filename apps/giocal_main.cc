@@ -9,6 +9,7 @@
 #include "apps/check_command.h"
 #include "apps/compare_command.h"
 #include "apps/deadreckon_command.h"
+#include "apps/import_command.h"
 #include "apps/interrupt_watch.h"
 #include "apps/simulate_command.h"
 #include "common/gnss/rtk_config.h"
@@ -36,6 +37,7 @@ const char* kUsage =
     "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv>] "
     "[--config <yaml>]\n"
     "                   --out <dir> [--overwrite] [--quiet]\n"
+    "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite]\n"
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
     "  terminal; --quiet turns that off)\n";
 
@@ -155,6 +157,22 @@ int runCompareCommand(int argc, char** argv) {
   return 0;
 }
 
+int runImportCommand(int argc, char** argv) {
+  po::options_description opts("giocal import");
+  opts.add_options()("ubx", po::value<std::string>()->required(), "u-blox UBX log")(
+      "out", po::value<std::string>()->required(), "output folder")(
+      "overwrite", "replace the outputs of an earlier import in --out");
+  const po::variables_map vm = parsed(argc, argv, opts);
+  giocal::ImportJob job;
+  job.ubx = vm["ubx"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") > 0;
+  const giocal::InterruptWatch interrupts;
+  job.stop = interrupts.stop();
+  giocal::runImport(job, std::cout);
+  return 0;
+}
+
 int runDeadReckonCommand(int argc, char** argv) {
   po::options_description opts("giocal deadreckon");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
@@ -198,6 +216,7 @@ int main(int argc, char** argv) {
     if (command == "calibrate") return runCalibrateCommand(argc - 1, argv + 1);
     if (command == "compare") return runCompareCommand(argc - 1, argv + 1);
     if (command == "deadreckon") return runDeadReckonCommand(argc - 1, argv + 1);
+    if (command == "import") return runImportCommand(argc - 1, argv + 1);
     std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
     return 2;
   } catch (const giocal::Interrupted& e) {

@@ -8,7 +8,7 @@
 #include "common/gnss/rinex_nav.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
-#include "sim/rinex_writer.h"
+#include "common/gnss/rinex_obs_writer.h"
 #include "sim/sensor_errors.h"
 #include "sim/trajectory.h"
 

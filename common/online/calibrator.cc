@@ -61,7 +61,7 @@ void Calibrator::addImu(const ImuSample& s) {
     dropped(Counter::kNonFiniteSamples, s.t, "IMU sample with NaN or infinite values");
     return;
   }
-  push(s.t, {Kind::kImu, s, {}, {}});
+  push(s.t, {Kind::kImu, s, {}, {}, {}});
 }
 
 void Calibrator::addOdometer(const OdomSample& s) {
@@ -70,17 +70,17 @@ void Calibrator::addOdometer(const OdomSample& s) {
     dropped(Counter::kNonFiniteSamples, s.t, "odometer sample with NaN or infinite values");
     return;
   }
-  push(s.t, {Kind::kOdometer, {}, s, {}});
+  push(s.t, {Kind::kOdometer, {}, s, {}, {}});
 }
 
 void Calibrator::addRover(const ObsEpoch& e) {
   BusyTimer busy(busy_s_);
-  push(e.t, {Kind::kRover, {}, {}, e});
+  push(e.t, {Kind::kRover, {}, {}, e, {}});
 }
 
 void Calibrator::addBase(const ObsEpoch& e) {
   BusyTimer busy(busy_s_);
-  push(e.t, {Kind::kBase, {}, {}, e});
+  push(e.t, {Kind::kBase, {}, {}, e, {}});
 }
 
 void Calibrator::addPosition(const PositionFix& p) {

@@ -1,4 +1,4 @@
-// Writer of RINEX 3.04 observation files (what the simulator produces).
+// Writer of RINEX 3.04 observation files (the simulator's and import's output).
 #pragma once
 
 #include <map>
@@ -7,10 +7,13 @@
 
 #include "common/gnss/observation.h"
 
-namespace giocal::sim {
+namespace giocal {
 
 struct RinexObsHeader {
+  std::string program = "giocal simulate";
   std::string marker = "SIM";
+  std::string receiver = "GIOCAL SIMULATOR";  // REC # / TYPE / VERS
+  std::string antenna = "SIMULATED";          // ANT # / TYPE
   Eigen::Vector3d approx_position = Eigen::Vector3d::Zero();
   double interval = 1.0;
   std::map<char, std::vector<std::string>> obs_types;  // system -> codes ("C1C", "L1C", ...)
@@ -20,4 +23,4 @@ struct RinexObsHeader {
 void writeRinexObs(const std::string& path, const RinexObsHeader& header,
                    const std::vector<ObsEpoch>& epochs);
 
-}  // namespace giocal::sim
+}  // namespace giocal

@@ -1,4 +1,4 @@
-#include "sim/rinex_writer.h"
+#include "common/gnss/rinex_obs_writer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include "common/io/atomic_file.h"
 #include "common/time/gps_time.h"
 
-namespace giocal::sim {
+namespace giocal {
 
 namespace {
 
@@ -38,11 +38,11 @@ void writeRinexObs(const std::string& path, const RinexObsHeader& h,
   auto& out = file.stream();
   char buf[128];
   out << headerLine("     3.04           OBSERVATION DATA    M", "RINEX VERSION / TYPE");
-  out << headerLine("giocal simulate", "PGM / RUN BY / DATE");
+  out << headerLine(h.program, "PGM / RUN BY / DATE");
   out << headerLine(h.marker, "MARKER NAME");
   out << headerLine("", "OBSERVER / AGENCY");
-  out << headerLine("SIM                 GIOCAL SIMULATOR", "REC # / TYPE / VERS");
-  out << headerLine("SIM                 SIMULATED", "ANT # / TYPE");
+  out << headerLine(std::string(20, ' ') + h.receiver.substr(0, 20), "REC # / TYPE / VERS");
+  out << headerLine(std::string(20, ' ') + h.antenna.substr(0, 20), "ANT # / TYPE");
   std::snprintf(buf, sizeof(buf), "%14.4f%14.4f%14.4f", h.approx_position.x(),
                 h.approx_position.y(), h.approx_position.z());
   out << headerLine(buf, "APPROX POSITION XYZ");
@@ -72,8 +72,9 @@ void writeRinexObs(const std::string& path, const RinexObsHeader& h,
   }
   out << headerLine("", "END OF HEADER");
   for (const ObsEpoch& e : epochs) {
-    // Round the tag once so that 59.99999999 s does not print as 60.
-    const double t = std::round(e.t * 1e7) / 1e7;
+    // A time in GPS seconds carries about 0.2 us near 2025; round to the microsecond once, so
+    // that 39.748 does not print as 39.7479999 nor 59.99999999 as 60.
+    const double t = std::round(e.t * 1e6) / 1e6;
     const CalendarTime c = calendarFromGpsSeconds(t);
     std::snprintf(buf, sizeof(buf), "> %4d %02d %02d %02d %02d%11.7f  %d%3d", c.year, c.month,
                   c.day, c.hour, c.minute, c.second, e.flag, static_cast<int>(e.sats.size()));
@@ -101,4 +102,4 @@ void writeRinexObs(const std::string& path, const RinexObsHeader& h,
   file.commit();
 }
 
-}  // namespace giocal::sim
+}  // namespace giocal

@@ -1,0 +1,109 @@
+#include "apps/import_command.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/rinex_nav_writer.h"
+#include "common/gnss/rinex_obs_writer.h"
+#include "common/gnss/spp.h"
+#include "common/io/output_set.h"
+#include "import/ubx_log.h"
+
+namespace giocal {
+namespace {
+
+const std::vector<std::string> kFiles{"rover.obs", "nav.rnx", "import.json"};
+
+// Single point positions of the imported epochs: the check that observations and ephemerides
+// fit together, and the header's approximate position.
+struct SppCheck {
+  int epochs = 0, solved = 0;
+  Eigen::Vector3d first_p_e = Eigen::Vector3d::Zero();
+};
+
+SppCheck sppCheck(const import::UbxLog& log) {
+  SppCheck c;
+  const BroadcastOrbits orbits(log.nav);
+  for (const ObsEpoch& e : log.obs.epochs) {
+    ++c.epochs;
+    const SppSolution s = solveSpp(e, orbits, SppOptions{});
+    if (!s.valid) continue;
+    if (c.solved++ == 0) c.first_p_e = s.p_e;
+  }
+  return c;
+}
+
+}  // namespace
+
+void runImport(const ImportJob& job, std::ostream& log) {
+  if (job.ubx.empty()) throw std::runtime_error("give --ubx <file.ubx>");
+  if (!job.overwrite) {
+    for (const std::string& f : kFiles) {
+      if (std::filesystem::exists(job.out + "/" + f)) {
+        throw std::runtime_error(job.out + "/" + f + " exists; give --overwrite to replace it");
+      }
+    }
+  }
+  import::UbxLog ubx = import::readUbxLog(job.ubx);
+  checkStop(job.stop);
+  const SppCheck spp = sppCheck(ubx);
+  ubx.obs.header.approx_position = spp.first_p_e;
+  checkStop(job.stop);
+
+  OutputSet outputs(job.out);
+  RinexObsHeader header;
+  header.program = "giocal import";
+  header.marker = "UBX";
+  header.receiver = "u-blox (UBX-RXM-RAWX)";
+  header.approx_position = ubx.obs.header.approx_position;
+  header.interval = ubx.obs.header.interval;
+  header.obs_types = ubx.obs.header.obs_types;
+  writeRinexObs(outputs.stagedPath("rover.obs"), header, ubx.obs.epochs);
+  writeRinexNav(outputs.stagedPath("nav.rnx"), ubx.nav, "giocal import");
+  std::map<std::string, int> per_system;
+  for (const Ephemeris& e : ubx.nav.ephemerides)
+    ++per_system[std::string(1, static_cast<char>(e.sat.sys))];
+  nlohmann::ordered_json j;
+  j["files"] = {{"rover.obs", outputs.close("rover.obs")}, {"nav.rnx", outputs.close("nav.rnx")}};
+  j["source"] = job.ubx;
+  j["epochs"] = ubx.obs.epochs.size();
+  j["t_first"] = ubx.obs.epochs.front().t;
+  j["t_last"] = ubx.obs.epochs.back().t;
+  j["interval_s"] = ubx.obs.header.interval;
+  j["ephemerides"] = per_system;
+  j["frames"] = ubx.stream.frames;
+  j["bad_checksums"] = ubx.stream.bad_checksums;
+  j["skipped_bytes"] = ubx.stream.skipped_bytes;
+  j["truncated_end"] = ubx.stream.truncated_end;
+  j["rawx"] = {{"measurements", ubx.rawx.measurements},
+               {"unsupported_system", ubx.rawx.unsupported_system},
+               {"unknown_signal", ubx.rawx.unknown_signal},
+               {"invalid_code", ubx.rawx.invalid_code},
+               {"invalid_phase", ubx.rawx.invalid_phase},
+               {"clock_resets", ubx.rawx.clock_resets},
+               {"rejected_payloads", ubx.rawx_rejected},
+               {"epochs_out_of_order", ubx.epochs_out_of_order}};
+  j["subframes"] = {{"read", ubx.subframes},
+                    {"rejected", ubx.subframes_rejected},
+                    {"not_read", ubx.subframes_not_read}};
+  j["other_messages"] = ubx.other_messages;
+  j["spp_epochs_solved"] = spp.solved;
+  j["warnings"] = ubx.warnings;
+  outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+  outputs.commit();
+
+  log << "giocal import: " << job.ubx << ": " << ubx.obs.epochs.size() << " epochs over "
+      << std::fixed << std::setprecision(1) << ubx.obs.epochs.back().t - ubx.obs.epochs.front().t
+      << " s, " << ubx.nav.ephemerides.size() << " ephemerides";
+  for (const auto& [sys, n] : per_system) log << " " << sys << ":" << n;
+  log << "; single point positions in " << spp.solved << " of " << spp.epochs << " epochs\n";
+  for (const std::string& w : ubx.warnings) log << "  warning: " << w << "\n";
+  log << "  outputs: " << job.out << "/{rover.obs, nav.rnx, import.json}\n";
+  log.unsetf(std::ios::fixed);
+}
+
+}  // namespace giocal

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses with clang into build-fuzz/ (ASan + UBSan, -DGIOCAL_FUZZ=ON) and
+# runs each for <seconds> (default 60) from a seed corpus of giocal's own files (data/, config/ and
+# a simulated dataset); prints per harness the executions, and the crashes, timeouts (5 s) and
+# out-of-memory (2 GB) it found; their inputs are kept in <out> (default /tmp/giocal_fuzz).
+# Usage: fuzz/run.sh [seconds] [out]
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+secs="${1:-60}"
+out="${2:-/tmp/giocal_fuzz}"
+bash "$root/scripts/setup.sh" > /dev/null  # packages and the normal build (for the seed dataset)
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="${missing:-} $p"
+done
+if [ -n "${missing:-}" ]; then
+  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $missing > /dev/null
+fi
+CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-fuzz" -DGIOCAL_FUZZ=ON \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+harnesses=(${GIOCAL_FUZZ_HARNESSES:-fuzz_rinex_obs fuzz_rinex_nav fuzz_csv_logs fuzz_yaml fuzz_ubx})
+cmake --build "$root/build-fuzz" -j "$(nproc)" --target "${harnesses[@]}" > /dev/null
+
+# Seed corpora.
+rm -rf "$out" && mkdir -p "$out"
+sim="$out/sim"
+"$root/build/apps/giocal" simulate --config "$root/config/sim/paper.yaml" --out "$sim" > /dev/null
+for h in "${harnesses[@]}"; do mkdir -p "$out/$h/corpus"; done
+k=0
+for f in "$root"/data/real/*/*.obs "$root"/data/real/*/*o "$sim/rover.obs"; do
+  [ -f "$f" ] && head -c 60000 "$f" > "$out/fuzz_rinex_obs/corpus/seed$((k++))"
+done
+for f in "$root"/data/real/*/*.nav "$root"/data/real/*/*n "$sim/nav.rnx"; do
+  [ -f "$f" ] && head -c 60000 "$f" > "$out/fuzz_rinex_nav/corpus/seed$((k++))"
+done
+i=0
+for f in imu.csv odom.csv truth.csv; do
+  { printf "\\x$(printf %02x $i)"; head -40 "$sim/$f"; } > "$out/fuzz_csv_logs/corpus/$f"
+  i=$((i + 1))
+done
+{ printf '\x03'; head -40 "$root/data/real/mosaic-static-nagoya/rover_rtk.pos"; } \
+  > "$out/fuzz_csv_logs/corpus/pos"
+# The real F9P log in pieces of 20 kB (a whole log is slow per execution).
+if [ -d "$out/fuzz_ubx" ]; then
+  split -b 20000 -a 3 "$root/data/real/ublox-f9p-walk/gnss_1730.ubx" "$out/fuzz_ubx/corpus/seed"
+fi
+{ printf '\x00'; cat "$sim/dataset.yaml"; } > "$out/fuzz_yaml/corpus/dataset"
+{ printf '\x01'; cat "$root/config/giocal.yaml"; } > "$out/fuzz_yaml/corpus/config"
+{ printf '\x02'; cat "$root/config/sim/field.yaml"; } > "$out/fuzz_yaml/corpus/preset"
+
+printf "%-16s %12s %8s %9s %5s %6s\n" harness executions crashes timeouts oom leaks
+status=0
+for h in "${harnesses[@]}"; do
+  ( cd "$out/$h" && "$root/build-fuzz/fuzz/$h" -max_total_time="$secs" -timeout=5 \
+      -rss_limit_mb=2048 -artifact_prefix="$out/$h/" -print_final_stats=1 corpus \
+      > log.txt 2>&1 ) || true
+  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$out/$h/log.txt" | grep -o '[0-9]*$' || echo 0)
+  n() { find "$out/$h" -maxdepth 1 -name "$1-*" | wc -l; }
+  printf "%-16s %12s %8s %9s %5s %6s\n" "$h" "${runs:-0}" "$(n crash)" "$(n timeout)" "$(n oom)" \
+    "$(n leak)"
+  [ "$(n crash)$(n timeout)$(n oom)$(n leak)" = "0000" ] || status=1
+done
+exit $status

@@ -1,0 +1,160 @@
+#include "import/ubx_log.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "import/galileo_inav.h"
+#include "import/gps_lnav.h"
+#include "import/payload_reader.h"
+#include "import/ubx_signals.h"
+
+namespace giocal::import {
+
+namespace {
+
+constexpr uint8_t kClassRxm = 0x02;
+constexpr uint8_t kIdRawx = 0x15;
+constexpr uint8_t kIdSfrbx = 0x13;
+constexpr std::size_t kMaxEarlySubframes = 2000;
+
+struct NavDecoders {
+  GpsLnavAssembler lnav;
+  GalileoInavAssembler inav;
+};
+
+// Per system, the signals seen, each as its C, L, D and S observation codes.
+void setObsTypes(ObsData& obs) {
+  std::map<char, std::set<std::pair<char, char>>> seen;
+  for (const ObsEpoch& e : obs.epochs) {
+    for (const SatObs& s : e.sats) {
+      for (const SignalObs& g : s.signals)
+        seen[static_cast<char>(s.sat.sys)].insert({g.band, g.attr});
+    }
+  }
+  for (const auto& [sys, signals] : seen) {
+    auto& types = obs.header.obs_types[sys];
+    for (const auto& [band, attr] : signals) {
+      for (char kind : {'C', 'L', 'D', 'S'}) types.push_back(std::string{kind, band, attr});
+    }
+  }
+}
+
+double medianInterval(const std::vector<ObsEpoch>& epochs) {
+  std::vector<double> dt;
+  for (std::size_t k = 1; k < epochs.size(); ++k) dt.push_back(epochs[k].t - epochs[k - 1].t);
+  if (dt.empty()) return 0.0;
+  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
+  return std::round(dt[dt.size() / 2] * 1e3) / 1e3;
+}
+
+void readSubframe(const UbxFrame& f, double t_rx, NavDecoders& dec, UbxLog& log) {
+  ++log.subframes;
+  const PayloadReader p(f.payload);
+  if (p.size() < 8 || p.size() != 8 + 4 * static_cast<std::size_t>(p.u1(4))) {
+    ++log.subframes_rejected;
+    return;
+  }
+  SatId sat;
+  const int gnss = p.u1(0), sig = p.u1(2);
+  if (!ubxSatellite(gnss, p.u1(1), sat)) {
+    ++log.subframes_not_read;
+    return;
+  }
+  std::vector<uint32_t> words;
+  for (std::size_t k = 0; k < p.u1(4); ++k) words.push_back(p.u4(8 + 4 * k));
+  try {
+    std::optional<Ephemeris> eph;
+    if ((sat.sys == GnssSystem::kGps || sat.sys == GnssSystem::kQzss) && sig == 0) {
+      eph = dec.lnav.add(sat, words, t_rx);
+    } else if (sat.sys == GnssSystem::kGalileo && (sig == 1 || sig == 5)) {
+      eph = dec.inav.add(sat, words, t_rx);
+    } else {
+      ++log.subframes_not_read;
+      return;
+    }
+    if (eph) log.nav.ephemerides.push_back(*eph);
+  } catch (const std::exception&) {
+    ++log.subframes_rejected;
+  }
+}
+
+std::string at(const std::string& path, long long offset) {
+  return path + ": byte " + std::to_string(offset) + ": ";
+}
+
+}  // namespace
+
+UbxLog readUbxLog(const std::string& path) {
+  UbxStream stream(path);
+  RawxDecoder rawx;
+  NavDecoders dec;
+  UbxLog log;
+  UbxFrame f;
+  long long first_rawx_bad = -1, first_out_of_order = -1;
+  std::vector<UbxFrame> early;
+  while (stream.next(f)) {
+    if (f.cls == kClassRxm && f.id == kIdRawx) {
+      try {
+        ObsEpoch e = rawx.decode(f.payload);
+        if (!log.obs.epochs.empty() && e.t <= log.obs.epochs.back().t) {
+          ++log.epochs_out_of_order;
+          if (first_out_of_order < 0) first_out_of_order = f.offset;
+          continue;
+        }
+        log.obs.epochs.push_back(std::move(e));
+      } catch (const std::exception& ex) {
+        ++log.rawx_rejected;
+        if (first_rawx_bad < 0) {
+          first_rawx_bad = f.offset;
+          log.warnings.push_back(at(path, f.offset) + ex.what());
+        }
+      }
+    } else if (f.cls == kClassRxm && f.id == kIdSfrbx) {
+      // Subframes before the first epoch wait for its time (they need it for their week).
+      if (log.obs.epochs.empty()) {
+        if (early.size() < kMaxEarlySubframes) {
+          early.push_back(f);
+        } else {
+          ++log.subframes_not_read;
+        }
+        continue;
+      }
+      for (const UbxFrame& e : early) readSubframe(e, log.obs.epochs.back().t, dec, log);
+      early.clear();
+      readSubframe(f, log.obs.epochs.back().t, dec, log);
+    } else {
+      ++log.other_messages;
+    }
+  }
+  if (const auto& iono = dec.lnav.ionosphere()) {
+    log.nav.gps_iono = *iono;
+    log.nav.has_gps_iono = true;
+  }
+  log.stream = stream.counts();
+  log.rawx = rawx.counts();
+  if (log.obs.epochs.empty()) throw std::runtime_error(path + ": no UBX-RXM-RAWX epoch in the log");
+  if (log.stream.bad_checksums > 0) {
+    log.warnings.push_back(at(path, log.stream.first_bad_offset) +
+                           std::to_string(log.stream.bad_checksums) +
+                           " frames with a bad checksum skipped (first here)");
+  }
+  if (log.stream.truncated_end) log.warnings.push_back(path + ": the log ends inside a frame");
+  if (log.epochs_out_of_order > 0) {
+    log.warnings.push_back(at(path, first_out_of_order) + std::to_string(log.epochs_out_of_order) +
+                           " RAWX epochs not after the previous one dropped (time going "
+                           "backwards or repeated; first here)");
+  }
+  if (log.subframes_rejected > 0) {
+    log.warnings.push_back(path + ": " + std::to_string(log.subframes_rejected) +
+                           " navigation subframes rejected (bad CRC, not LNAV, part order)");
+  }
+  log.obs.header.marker = "UBX";
+  log.obs.header.interval = medianInterval(log.obs.epochs);
+  setObsTypes(log.obs);
+  return log;
+}
+
+}  // namespace giocal::import

@@ -1,0 +1,33 @@
+// UbxLog: a u-blox UBX log read whole into observations (RXM-RAWX) and broadcast ephemerides
+// (RXM-SFRBX: GPS/QZSS LNAV, Galileo I/NAV), with everything skipped or damaged counted.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/gnss/observation.h"
+#include "common/gnss/rinex_nav.h"
+#include "import/rawx_decoder.h"
+#include "import/ubx_stream.h"
+
+namespace giocal::import {
+
+struct UbxLog {
+  ObsData obs;  // header.obs_types lists the signals present, per system, C L D S per signal
+  NavData nav;
+  UbxStreamCounts stream;
+  RawxCounts rawx;
+  long long rawx_rejected = 0;        // RAWX payloads that were not readable
+  long long epochs_out_of_order = 0;  // epochs not after the previous one (dropped)
+  long long subframes = 0;            // RXM-SFRBX messages
+  long long subframes_rejected = 0;   // bad CRC, not LNAV, part order
+  long long subframes_not_read = 0;   // systems and signals without an ephemeris decoder here
+  long long other_messages = 0;       // UBX messages other than RAWX and SFRBX
+  /// One line per kind of damage or skipped content, naming the file and the first byte offset.
+  std::vector<std::string> warnings;
+};
+
+/// Reads the log; throws std::runtime_error naming the file when it has no RXM-RAWX epoch.
+UbxLog readUbxLog(const std::string& path);
+
+}  // namespace giocal::import
