@@ -44,10 +44,12 @@ void runCheck(const std::string& folder, std::ostream& out) {
   printStats(out, d.imu, timesOf(readImuCsv(d.pathOf(d.imu))));
   printStats(out, d.odom, timesOf(readOdomCsv(d.pathOf(d.odom))));
   if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));
-  std::vector<std::string> gnss{d.rover_obs, d.base_obs};
-  gnss.insert(gnss.end(), d.nav.begin(), d.nav.end());
   std::vector<std::string> missing;
+  if (d.rover_obs.empty()) {
+    out << "  no raw GNSS (files.rover_obs is empty): IMU and odometry only\n";
+  }
   for (const std::string& f : {d.rover_obs, d.base_obs}) {
+    if (f.empty()) continue;
     if (!std::filesystem::exists(d.pathOf(f))) {
       out << "  " << f << ": MISSING\n";
       missing.push_back(f);

@@ -38,6 +38,8 @@ const char* kUsage =
     "[--config <yaml>]\n"
     "                   --out <dir> [--overwrite] [--quiet]\n"
     "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite]\n"
+    "  giocal import    --bag <file.bag> [--imu-topic t] [--odom-topic t] [--fix-topic t]\n"
+    "                   --out <dir> [--overwrite]\n"
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
     "  terminal; --quiet turns that off)\n";
 
@@ -159,12 +161,21 @@ int runCompareCommand(int argc, char** argv) {
 
 int runImportCommand(int argc, char** argv) {
   po::options_description opts("giocal import");
-  opts.add_options()("ubx", po::value<std::string>()->required(), "u-blox UBX log")(
+  opts.add_options()("ubx", po::value<std::string>()->default_value(""), "u-blox UBX log")(
+      "bag", po::value<std::string>()->default_value(""), "ROS 1 bag")(
+      "imu-topic", po::value<std::string>()->default_value(""), "sensor_msgs/Imu topic")(
+      "odom-topic", po::value<std::string>()->default_value(""),
+      "nav_msgs/Odometry or geometry_msgs/TwistStamped topic")(
+      "fix-topic", po::value<std::string>()->default_value(""), "sensor_msgs/NavSatFix topic")(
       "out", po::value<std::string>()->required(), "output folder")(
       "overwrite", "replace the outputs of an earlier import in --out");
   const po::variables_map vm = parsed(argc, argv, opts);
   giocal::ImportJob job;
   job.ubx = vm["ubx"].as<std::string>();
+  job.bag = vm["bag"].as<std::string>();
+  job.imu_topic = vm["imu-topic"].as<std::string>();
+  job.odom_topic = vm["odom-topic"].as<std::string>();
+  job.fix_topic = vm["fix-topic"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") > 0;
   const giocal::InterruptWatch interrupts;

@@ -7,16 +7,41 @@
 #include <stdexcept>
 
 #include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/pos_file.h"
 #include "common/gnss/rinex_nav_writer.h"
 #include "common/gnss/rinex_obs_writer.h"
 #include "common/gnss/spp.h"
+#include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
+#include "common/io/sensor_logs.h"
+#include "import/bag_dataset.h"
 #include "import/ubx_log.h"
 
 namespace giocal {
 namespace {
 
-const std::vector<std::string> kFiles{"rover.obs", "nav.rnx", "import.json"};
+const std::vector<std::string> kUbxFiles{"rover.obs", "nav.rnx", "import.json"};
+const std::vector<std::string> kBagFiles{"imu.csv", "odom.csv", "gnss.pos", "dataset.yaml",
+                                         "import.json"};
+
+void refuseToOverwrite(const ImportJob& job, const std::vector<std::string>& files) {
+  if (job.overwrite) return;
+  for (const std::string& f : files) {
+    if (std::filesystem::exists(job.out + "/" + f)) {
+      throw std::runtime_error(job.out + "/" + f + " exists; give --overwrite to replace it");
+    }
+  }
+}
+
+nlohmann::ordered_json countsJson(const import::TopicCounts& c) {
+  return {{"topic", c.topic},
+          {"type", c.type},
+          {"read", c.read},
+          {"out_of_order", c.out_of_order},
+          {"non_finite", c.non_finite},
+          {"no_fix", c.no_fix},
+          {"largest_gap_s", c.largest_gap_s}};
+}
 
 // Single point positions of the imported epochs: the check that observations and ephemerides
 // fit together, and the header's approximate position.
@@ -37,17 +62,8 @@ SppCheck sppCheck(const import::UbxLog& log) {
   return c;
 }
 
-}  // namespace
-
-void runImport(const ImportJob& job, std::ostream& log) {
-  if (job.ubx.empty()) throw std::runtime_error("give --ubx <file.ubx>");
-  if (!job.overwrite) {
-    for (const std::string& f : kFiles) {
-      if (std::filesystem::exists(job.out + "/" + f)) {
-        throw std::runtime_error(job.out + "/" + f + " exists; give --overwrite to replace it");
-      }
-    }
-  }
+void importUbx(const ImportJob& job, std::ostream& log) {
+  refuseToOverwrite(job, kUbxFiles);
   import::UbxLog ubx = import::readUbxLog(job.ubx);
   checkStop(job.stop);
   const SppCheck spp = sppCheck(ubx);
@@ -104,6 +120,72 @@ void runImport(const ImportJob& job, std::ostream& log) {
   for (const std::string& w : ubx.warnings) log << "  warning: " << w << "\n";
   log << "  outputs: " << job.out << "/{rover.obs, nav.rnx, import.json}\n";
   log.unsetf(std::ios::fixed);
+}
+
+void importBag(const ImportJob& job, std::ostream& log) {
+  refuseToOverwrite(job, kBagFiles);
+  const auto bag = import::openBag(job.bag);
+  const import::BagDataset d =
+      import::readBagDataset(*bag, {job.imu_topic, job.odom_topic, job.fix_topic});
+  checkStop(job.stop);
+
+  OutputSet outputs(job.out);
+  DatasetDescription desc;
+  desc.folder = outputs.staging();
+  desc.rover_obs = desc.base_obs = "";  // no raw GNSS in a bag of fixes
+  desc.nav.clear();
+  desc.imu_noise = d.imu_noise;
+  desc.odom_noise = d.odom_noise;
+  writeImuCsv(outputs.stagedPath("imu.csv"), d.imu);
+  writeOdomCsv(outputs.stagedPath("odom.csv"), d.odom);
+  nlohmann::ordered_json files = {{"imu.csv", outputs.close("imu.csv")},
+                                  {"odom.csv", outputs.close("odom.csv")}};
+  if (!d.fixes.empty()) {
+    PosHeader h;
+    h.program = "giocal import (sensor_msgs/NavSatFix of " + d.fix_counts.topic + ")";
+    h.inputs = {job.bag};
+    writePosFile(outputs.stagedPath("gnss.pos"), h, d.fixes);
+    files["gnss.pos"] = outputs.close("gnss.pos");
+  }
+  outputs.stagedPath("dataset.yaml");  // joins the set; written by the dataset writer
+  writeDatasetDescription(desc);
+  files["dataset.yaml"] = outputs.close("dataset.yaml");
+  nlohmann::ordered_json j;
+  j["files"] = files;
+  j["source"] = job.bag;
+  j["imu"] = countsJson(d.imu_counts);
+  j["odometry"] = countsJson(d.odom_counts);
+  if (!d.fix_counts.topic.empty()) j["fix"] = countsJson(d.fix_counts);
+  j["utc_stamps"] = d.utc_stamps;
+  j["leap_seconds"] = d.leap_seconds;
+  j["noise_sources"] = d.noise_sources;
+  j["warnings"] = d.warnings;
+  outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+  outputs.commit();
+
+  log << "giocal import: " << job.bag << ": " << d.imu.size() << " IMU samples ("
+      << d.imu_counts.topic << "), " << d.odom.size() << " odometry samples ("
+      << d.odom_counts.topic << ")";
+  if (!d.fixes.empty())
+    log << ", " << d.fixes.size() << " GNSS fixes (" << d.fix_counts.topic << ")";
+  log << std::fixed << std::setprecision(1) << " over " << d.imu.back().t - d.imu.front().t
+      << " s\n";
+  for (const std::string& n : d.noise_sources) log << "  noise: " << n << "\n";
+  for (const std::string& w : d.warnings) log << "  warning: " << w << "\n";
+  log << "  outputs: " << job.out << "/{imu.csv, odom.csv, "
+      << (d.fixes.empty() ? "" : "gnss.pos, ") << "dataset.yaml, import.json}\n";
+  log.unsetf(std::ios::fixed);
+}
+
+}  // namespace
+
+void runImport(const ImportJob& job, std::ostream& log) {
+  if (job.ubx.empty() == job.bag.empty()) throw std::runtime_error("give one of --ubx and --bag");
+  if (!job.ubx.empty()) {
+    importUbx(job, log);
+  } else {
+    importBag(job, log);
+  }
 }
 
 }  // namespace giocal

@@ -1,5 +1,6 @@
-// `giocal import --ubx <file.ubx> --out <dir> [--overwrite]`: a receiver's log to RINEX 3.04
-// observation and navigation files giocal and other tools read.
+// `giocal import --ubx <file.ubx> | --bag <file.bag> [--imu-topic t] [--odom-topic t]
+// [--fix-topic t] --out <dir> [--overwrite]`: a receiver's log to RINEX 3.04 observation and
+// navigation files, or a ROS bag's IMU, wheel odometry and GNSS fixes to a dataset folder.
 #pragma once
 
 #include <iosfwd>
@@ -10,13 +11,15 @@
 namespace giocal {
 
 struct ImportJob {
-  std::string ubx, out;
+  std::string ubx, bag, out;
+  std::string imu_topic, odom_topic, fix_topic;  // empty: found by message type
   bool overwrite = false;
   const StopRequest* stop = nullptr;
 };
 
-/// Writes <out>/rover.obs, <out>/nav.rnx and <out>/import.json (what was read, skipped and
-/// damaged) as one set, and prints the counts and every warning.
+/// UBX: writes <out>/rover.obs, <out>/nav.rnx and <out>/import.json (what was read, skipped and
+/// damaged) as one set. Bag: writes imu.csv, odom.csv, gnss.pos (NavSatFix, when present),
+/// dataset.yaml and import.json as one set. Prints the counts and every warning.
 void runImport(const ImportJob& job, std::ostream& log);
 
 }  // namespace giocal

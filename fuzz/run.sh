@@ -2,12 +2,15 @@
 # Builds the libFuzzer harnesses with clang into build-fuzz/ (ASan + UBSan, -DGIOCAL_FUZZ=ON) and
 # runs each for <seconds> (default 60) from a seed corpus of giocal's own files (data/, config/ and
 # a simulated dataset); prints per harness the executions, and the crashes, timeouts (5 s) and
-# out-of-memory (2 GB) it found; their inputs are kept in <out> (default /tmp/giocal_fuzz).
-# Usage: fuzz/run.sh [seconds] [out]
+# out-of-memory (2 GB) it found; their inputs are kept in <out> (default /tmp/giocal_fuzz). With
+# <runs>, each harness stops after that many executions (or <seconds>, whichever comes first).
+# GIOCAL_FUZZ_HARNESSES="fuzz_ubx ..." picks harnesses.
+# Usage: fuzz/run.sh [seconds] [out] [runs]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 secs="${1:-60}"
 out="${2:-/tmp/giocal_fuzz}"
+runs="${3:--1}"
 bash "$root/scripts/setup.sh" > /dev/null  # packages and the normal build (for the seed dataset)
 for p in clang libclang-rt-14-dev; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="${missing:-} $p"
@@ -50,12 +53,12 @@ fi
 printf "%-16s %12s %8s %9s %5s %6s\n" harness executions crashes timeouts oom leaks
 status=0
 for h in "${harnesses[@]}"; do
-  ( cd "$out/$h" && "$root/build-fuzz/fuzz/$h" -max_total_time="$secs" -timeout=5 \
+  ( cd "$out/$h" && "$root/build-fuzz/fuzz/$h" -max_total_time="$secs" -runs="$runs" -timeout=5 \
       -rss_limit_mb=2048 -artifact_prefix="$out/$h/" -print_final_stats=1 corpus \
       > log.txt 2>&1 ) || true
-  runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$out/$h/log.txt" | grep -o '[0-9]*$' || echo 0)
+  executed=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$out/$h/log.txt" | grep -o '[0-9]*$' || echo 0)
   n() { find "$out/$h" -maxdepth 1 -name "$1-*" | wc -l; }
-  printf "%-16s %12s %8s %9s %5s %6s\n" "$h" "${runs:-0}" "$(n crash)" "$(n timeout)" "$(n oom)" \
+  printf "%-16s %12s %8s %9s %5s %6s\n" "$h" "${executed:-0}" "$(n crash)" "$(n timeout)" "$(n oom)" \
     "$(n leak)"
   [ "$(n crash)$(n timeout)$(n oom)$(n leak)" = "0000" ] || status=1
 done

@@ -86,6 +86,7 @@ std::optional<TruthCalibration> readFolderTruth(const std::string& folder) {
 CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink) {
   const auto t0 = std::chrono::steady_clock::now();
   const DatasetDescription d = readDatasetDescription(folder);
+  requireRawGnss(d);
   auto need = [&](const std::string& name) {
     const std::string p = d.pathOf(name);
     if (!std::filesystem::exists(p)) throw DataError(p, 0, "file missing");

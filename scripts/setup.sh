@@ -4,7 +4,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(cmake g++ make libeigen3-dev libceres-dev libsuitesparse-dev libboost-program-options-dev libgtest-dev
-  libyaml-cpp-dev nlohmann-json3-dev rtklib)
+  libyaml-cpp-dev nlohmann-json3-dev rtklib librosbag-storage-dev libboost-filesystem-dev libsqlite3-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -29,6 +29,7 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder) {
   in.odom = readOdomCsv(need(d.odom));
   if (in.imu.size() < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (in.odom.empty()) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
+  requireRawGnss(d);
   in.rover = readRinexObs(need(d.rover_obs));
   in.base = readRinexObs(need(d.base_obs));
   if (in.rover.epochs.empty()) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "common/io/atomic_file.h"
+#include "common/io/data_error.h"
 #include "common/io/yaml_fields.h"
 #include "common/math/rotation.h"
 
@@ -56,13 +57,21 @@ void writeYaml(const std::string& path, const YAML::Emitter& out, const std::str
 
 }  // namespace
 
+void requireRawGnss(const DatasetDescription& d) {
+  if (!d.rover_obs.empty()) return;
+  throw DataError(d.pathOf("dataset.yaml"), 0,
+                  "no raw GNSS (files.rover_obs is empty): calibrate needs rover and base "
+                  "observations; calibrating from positions alone (an imported bag's gnss.pos) is "
+                  "not implemented yet");
+}
+
 DatasetDescription readDatasetDescription(const std::string& folder) {
   const YamlFields y(folder + "/dataset.yaml");
   DatasetDescription d;
   d.folder = folder;
   d.rover_obs = y.text("files.rover_obs");
   d.base_obs = y.text("files.base_obs");
-  d.nav = y.textList("files.nav");
+  d.nav = y.textList("files.nav", d.rover_obs.empty());  // no raw GNSS, no ephemerides needed
   d.imu = y.text("files.imu");
   d.odom = y.text("files.odom");
   d.truth = y.textOr("files.truth", "");

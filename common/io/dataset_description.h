@@ -41,7 +41,7 @@ struct CalibrationPrior {
 
 struct DatasetDescription {
   std::string folder;  // absolute or relative folder the file names below are relative to
-  std::string rover_obs = "rover.obs";
+  std::string rover_obs = "rover.obs";  // empty: no raw GNSS (an imported bag of IMU and odometry)
   std::string base_obs = "base.obs";
   std::vector<std::string> nav{"nav.rnx"};
   std::string imu = "imu.csv";
@@ -61,6 +61,10 @@ struct TruthCalibration {
   OdometerCalibration calib;
   Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();
 };
+
+/// Throws DataError naming dataset.yaml when the dataset has no raw GNSS (files.rover_obs empty),
+/// which calibration needs.
+void requireRawGnss(const DatasetDescription& d);
 
 /// Reads <folder>/dataset.yaml. Throws DataError naming the file, line and problem.
 DatasetDescription readDatasetDescription(const std::string& folder);

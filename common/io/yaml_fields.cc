@@ -161,10 +161,10 @@ std::string YamlFields::textOr(const std::string& key, const std::string& fallba
   return has(key) ? text(key) : fallback;
 }
 
-std::vector<std::string> YamlFields::textList(const std::string& key) const {
+std::vector<std::string> YamlFields::textList(const std::string& key, bool allow_empty) const {
   const YAML::Node node = find(key);
   if (node.IsScalar()) return {node.as<std::string>()};
-  if (!node.IsSequence() || node.size() == 0) {
+  if (!node.IsSequence() || (node.size() == 0 && !allow_empty)) {
     throw DataError(path_, lineOf(node), "'" + key + "' must be a string or a list of strings");
   }
   std::vector<std::string> out;

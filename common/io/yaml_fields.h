@@ -28,7 +28,7 @@ class YamlFields {
   double numberOr(const std::string& key, double fallback, double min, double max) const;
   std::string text(const std::string& key) const;
   std::string textOr(const std::string& key, const std::string& fallback) const;
-  std::vector<std::string> textList(const std::string& key) const;
+  std::vector<std::string> textList(const std::string& key, bool allow_empty = false) const;
   Eigen::Vector3d vector3(const std::string& key) const;
   Eigen::Vector3d vector3(const std::string& key, double min, double max) const;
   Eigen::Vector4d vector4(const std::string& key) const;

@@ -1,0 +1,298 @@
+#include "import/bag_dataset.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "common/geodesy/wgs84.h"
+#include "common/time/gps_time.h"
+
+namespace giocal::import {
+
+namespace {
+
+constexpr double kUnixToGpsEpoch = 315964800.0;  // 1980-01-06 in seconds since 1970 (UTC)
+constexpr double kEarliestUtcStamp = 1e9;        // 2001: smaller stamps are not wall-clock time
+constexpr double kMaxStampDisagreement = 1.0;    // [s] between sensors' stamp-to-receive offsets
+
+bool isType(const std::string& type, const std::string& pkg, const std::string& name) {
+  return type == pkg + "/" + name || type == pkg + "/msg/" + name;
+}
+
+std::string topicList(const BagSource& bag) {
+  std::string s;
+  for (const BagTopic& t : bag.topics())
+    s += (s.empty() ? "" : ", ") + t.topic + " (" + t.type + ")";
+  return s.empty() ? "none" : s;
+}
+
+const BagTopic* pick(const BagSource& bag, const std::string& wanted, const std::string& what,
+                     const std::vector<std::pair<std::string, std::string>>& types, bool required,
+                     const std::string& flag) {
+  std::vector<const BagTopic*> found;
+  for (const BagTopic& t : bag.topics()) {
+    const bool typed = std::any_of(types.begin(), types.end(), [&](const auto& pt) {
+      return isType(t.type, pt.first, pt.second);
+    });
+    if (!wanted.empty() && t.topic == wanted) {
+      if (!typed)
+        throw std::runtime_error(bag.path() + ": topic " + wanted + " is " + t.type + ", not " +
+                                 what);
+      return &t;
+    }
+    if (wanted.empty() && typed) found.push_back(&t);
+  }
+  if (!wanted.empty())
+    throw std::runtime_error(bag.path() + ": no topic " + wanted + " (topics: " + topicList(bag) +
+                             ")");
+  if (found.size() > 1) {
+    std::string names;
+    for (const BagTopic* t : found) names += " " + t->topic;
+    throw std::runtime_error(bag.path() + ": several " + what + " topics:" + names +
+                             "; choose one with " + flag);
+  }
+  if (found.empty() && required) {
+    throw std::runtime_error(bag.path() + ": no " + what + " topic (topics: " + topicList(bag) +
+                             ")");
+  }
+  return found.empty() ? nullptr : found.front();
+}
+
+RosSchema schemaOf(const BagSource& bag, const BagTopic& t) {
+  const std::string def = t.definition.empty() ? builtinRos2Definition(t.type) : t.definition;
+  if (def.empty())
+    throw std::runtime_error(bag.path() + ": topic " + t.topic + " (" + t.type +
+                             ") carries no message definition");
+  try {
+    return RosSchema(t.type, def);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(bag.path() + ": topic " + t.topic + ": " + e.what());
+  }
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+// Per topic: stamps in order, their offsets from the bag's receive times, the first covariances.
+struct Stream {
+  const BagTopic* topic = nullptr;
+  RosSchema schema;
+  TopicCounts* counts;
+  double last = -INFINITY;
+  std::vector<double> offsets;  // header stamp - receive time
+  std::vector<double> covariance;
+};
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
+  return buf;
+}
+
+// A noise value from a covariance when it lies in the range a real sensor's can, else the default.
+double noiseValue(double from_covariance, double lo, double hi, double fallback,
+                  const std::string& name, std::vector<std::string>& sources) {
+  const bool ok = std::isfinite(from_covariance) && from_covariance >= lo && from_covariance <= hi;
+  sources.push_back(name + ": " +
+                    (ok ? "message covariance" : "default (covariance absent or implausible)"));
+  return ok ? from_covariance : fallback;
+}
+
+void setNoise(BagDataset& out, const Stream* imu, const Stream* odom) {
+  std::vector<double> dt;
+  for (std::size_t k = 1; k < out.imu.size(); ++k) dt.push_back(out.imu[k].t - out.imu[k - 1].t);
+  const double imu_dt = median(dt);
+  auto density = [&](const std::vector<double>& c, std::size_t from) {
+    if (c.size() < from + 3 || c[from] < 0.0) return std::nan("");  // -1: not provided
+    return std::sqrt((c[from] + c[from + 1] + c[from + 2]) / 3.0 * imu_dt);
+  };
+  ImuNoise& n = out.imu_noise;
+  n.gyro_noise_density = noiseValue(density(imu->covariance, 0), 1e-5, 1e-1, n.gyro_noise_density,
+                                    "imu gyro_noise_density", out.noise_sources);
+  n.accel_noise_density = noiseValue(density(imu->covariance, 3), 1e-4, 1.0, n.accel_noise_density,
+                                     "imu accel_noise_density", out.noise_sources);
+  out.noise_sources.push_back(
+      "imu bias random walks and sigmas: default (ROS messages carry none)");
+  OdometerNoise& o = out.odom_noise;
+  const auto& c = odom->covariance;
+  o.speed_sigma = noiseValue(c.size() == 2 && c[0] > 0 ? std::sqrt(c[0]) : NAN, 1e-4, 1.0,
+                             o.speed_sigma, "odometer speed_sigma", out.noise_sources);
+  o.yaw_rate_sigma = noiseValue(c.size() == 2 && c[1] > 0 ? std::sqrt(c[1]) : NAN, 1e-4, 1.0,
+                                o.yaw_rate_sigma, "odometer yaw_rate_sigma", out.noise_sources);
+}
+
+void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams,
+                      const BagSource& bag) {
+  // One time base: wall-clock (UTC) stamps on every topic, or on none.
+  std::string utc, other;
+  for (const auto& [name, s] : streams) {
+    if (s.offsets.empty()) continue;
+    (s.last >= kEarliestUtcStamp ? utc : other) += " " + name;
+  }
+  if (!utc.empty() && !other.empty()) {
+    throw std::runtime_error(bag.path() + ": mixed time bases: stamps of" + utc +
+                             " are wall-clock time, those of" + other + " are not");
+  }
+  out.utc_stamps = other.empty();
+  // Stamps that disagree with the recording clock differently per sensor.
+  double lo = INFINITY, hi = -INFINITY;
+  std::string offsets;
+  for (const auto& [name, s] : streams) {
+    if (s.offsets.empty()) continue;
+    const double m = median(s.offsets);
+    lo = std::min(lo, m);
+    hi = std::max(hi, m);
+    offsets += " " + name + " " + fixed(m, 3) + " s;";
+  }
+  if (hi - lo > kMaxStampDisagreement) {
+    out.warnings.push_back(bag.path() +
+                           ": header stamps minus recording times differ by more than " +
+                           fixed(kMaxStampDisagreement, 0) + " s between sensors:" + offsets +
+                           " one sensor's clock or stamping is off by about the difference");
+  }
+  for (const auto& [name, s] : streams) {
+    const TopicCounts& c = *s.counts;
+    if (c.out_of_order > 0)
+      out.warnings.push_back(bag.path() + ": topic " + name + ": " +
+                             std::to_string(c.out_of_order) +
+                             " messages with a stamp not after the previous one dropped");
+    if (c.non_finite > 0)
+      out.warnings.push_back(bag.path() + ": topic " + name + ": " + std::to_string(c.non_finite) +
+                             " messages with NaN or infinite values dropped");
+    if (c.no_fix > 0)
+      out.warnings.push_back(bag.path() + ": topic " + name + ": " + std::to_string(c.no_fix) +
+                             " fixes with status NO_FIX dropped");
+    if (c.largest_gap_s > 1.0)
+      out.warnings.push_back(bag.path() + ": topic " + name + ": a gap of " +
+                             fixed(c.largest_gap_s, 2) + " s between messages");
+  }
+  if (out.imu.size() < 2 || out.odom.size() < 2) {
+    throw std::runtime_error(bag.path() + ": fewer than 2 usable IMU or odometry messages");
+  }
+  setNoise(out, &streams.at(out.imu_counts.topic), &streams.at(out.odom_counts.topic));
+  if (!out.utc_stamps) {
+    out.warnings.push_back(bag.path() + ": stamps are not wall-clock time (the first is " +
+                           fixed(out.imu.front().t, 3) +
+                           " s): kept as they are, so GNSS cannot be aligned");
+    return;
+  }
+  // ROS time is UTC since 1970; giocal's is GPS time since 1980.
+  out.leap_seconds = leapSecondsAtUtc(out.imu.front().t - kUnixToGpsEpoch);
+  for (auto& x : out.imu) x.t = gpsFromUtcSeconds(x.t - kUnixToGpsEpoch);
+  for (auto& x : out.odom) x.t = gpsFromUtcSeconds(x.t - kUnixToGpsEpoch);
+  for (auto& x : out.fixes) x.t = gpsFromUtcSeconds(x.t - kUnixToGpsEpoch);
+}
+
+}  // namespace
+
+BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
+  BagDataset out;
+  const BagTopic* imu =
+      pick(bag, topics.imu, "sensor_msgs/Imu", {{"sensor_msgs", "Imu"}}, true, "--imu-topic");
+  const BagTopic* odom =
+      pick(bag, topics.odom, "nav_msgs/Odometry or geometry_msgs/TwistStamped",
+           {{"nav_msgs", "Odometry"}, {"geometry_msgs", "TwistStamped"}}, true, "--odom-topic");
+  const BagTopic* fix = pick(bag, topics.fix, "sensor_msgs/NavSatFix",
+                             {{"sensor_msgs", "NavSatFix"}}, false, "--fix-topic");
+  std::map<std::string, Stream> streams;
+  auto add = [&](const BagTopic* t, TopicCounts& c) {
+    if (!t) return;
+    c.topic = t->topic;
+    c.type = t->type;
+    streams.emplace(t->topic, Stream{t, schemaOf(bag, *t), &c, -INFINITY, {}, {}});
+  };
+  add(imu, out.imu_counts);
+  add(odom, out.odom_counts);
+  add(fix, out.fix_counts);
+  const bool twist_stamped = isType(odom->type, "geometry_msgs", "TwistStamped");
+  std::set<std::string> names;
+  for (const auto& [name, s] : streams) names.insert(name);
+
+  bag.read(names, [&](const BagTopic& t, double received, const uint8_t* data, std::size_t size) {
+    Stream& s = streams.at(t.topic);
+    RosMessage m;
+    try {
+      m = RosMessage::decode(s.schema, bag.encoding(), data, size);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(bag.path() + ": topic " + t.topic + ", message " +
+                               std::to_string(s.counts->read + 1) + ": " + e.what());
+    }
+    ++s.counts->read;
+    const double stamp = m.time("header.stamp");
+    if (!std::isfinite(stamp) || stamp <= s.last) {
+      ++s.counts->out_of_order;
+      return;
+    }
+    if (std::isfinite(s.last))
+      s.counts->largest_gap_s = std::max(s.counts->largest_gap_s, stamp - s.last);
+    s.last = stamp;
+    s.offsets.push_back(stamp - received);
+    if (s.topic == imu) {
+      ImuSample x;
+      x.t = stamp;
+      x.gyro = {m.number("angular_velocity.x"), m.number("angular_velocity.y"),
+                m.number("angular_velocity.z")};
+      x.acc = {m.number("linear_acceleration.x"), m.number("linear_acceleration.y"),
+               m.number("linear_acceleration.z")};
+      if (!x.gyro.allFinite() || !x.acc.allFinite()) {
+        ++s.counts->non_finite;
+        return;
+      }
+      if (s.covariance.empty()) {
+        s.covariance = {m.number("angular_velocity_covariance[0]"),
+                        m.number("angular_velocity_covariance[4]"),
+                        m.number("angular_velocity_covariance[8]"),
+                        m.number("linear_acceleration_covariance[0]"),
+                        m.number("linear_acceleration_covariance[4]"),
+                        m.number("linear_acceleration_covariance[8]")};
+      }
+      out.imu.push_back(x);
+    } else if (s.topic == odom) {
+      const std::string twist = twist_stamped ? "twist" : "twist.twist";
+      OdomSample x{stamp, m.number(twist + ".linear.x"), m.number(twist + ".angular.z")};
+      if (!std::isfinite(x.v) || !std::isfinite(x.w)) {
+        ++s.counts->non_finite;
+        return;
+      }
+      if (s.covariance.empty() && !twist_stamped) {
+        s.covariance = {m.number("twist.covariance[0]"), m.number("twist.covariance[35]")};
+      }
+      out.odom.push_back(x);
+    } else {
+      if (m.number("status.status") < 0) {
+        ++s.counts->no_fix;
+        return;
+      }
+      Geodetic g{m.number("latitude") * M_PI / 180.0, m.number("longitude") * M_PI / 180.0,
+                 m.number("altitude")};
+      Eigen::Matrix3d cov_enu;
+      for (int k = 0; k < 9; ++k)
+        cov_enu(k / 3, k % 3) = m.number("position_covariance[" + std::to_string(k) + "]");
+      if (!std::isfinite(g.lat + g.lon + g.h) || !cov_enu.allFinite()) {
+        ++s.counts->non_finite;
+        return;
+      }
+      if (m.number("position_covariance_type") == 0 || cov_enu.diagonal().minCoeff() <= 0.0) {
+        cov_enu = Eigen::Vector3d(25.0, 25.0, 100.0).asDiagonal();  // unknown: a single-point fix
+      }
+      RtkSolution f;
+      f.t = stamp;
+      const int status = static_cast<int>(m.number("status.status"));
+      f.quality = status == 2 ? 4 : status == 1 ? 3 : 5;
+      f.p_e = ecefFromGeodetic(g);
+      const Eigen::Matrix3d R_e_n = rotationEcefFromEnu(g.lat, g.lon);
+      f.cov_e = R_e_n * cov_enu * R_e_n.transpose();
+      out.fixes.push_back(f);
+    }
+  });
+  finishBagDataset(out, streams, bag);
+  return out;
+}
+
+}  // namespace giocal::import

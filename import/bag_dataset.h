@@ -1,0 +1,49 @@
+// BagDataset: the IMU, wheel odometry and GNSS fixes of a ROS bag as giocal's sensor logs, with
+// the sensor noise its message covariances give, in GPS time, and every sample it had to drop.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/gnss/rtk.h"
+#include "common/imu/imu_sample.h"
+#include "common/io/dataset_description.h"
+#include "common/odometer/odom_sample.h"
+#include "import/bag_source.h"
+
+namespace giocal::import {
+
+/// Topics to read; empty: the one topic of the type (sensor_msgs/Imu; nav_msgs/Odometry or
+/// geometry_msgs/TwistStamped; sensor_msgs/NavSatFix), an error when several are present.
+struct BagTopics {
+  std::string imu, odom, fix;
+};
+
+struct TopicCounts {
+  std::string topic, type;
+  long long read = 0;
+  long long out_of_order = 0;  // stamps not after the previous one (dropped)
+  long long non_finite = 0;    // NaN or infinite values (dropped)
+  long long no_fix = 0;        // NavSatFix with status -1 (dropped)
+  double largest_gap_s = 0.0;
+};
+
+struct BagDataset {
+  std::vector<ImuSample> imu;
+  std::vector<OdomSample> odom;
+  std::vector<RtkSolution> fixes;  // NavSatFix positions: quality 5 single, 4 DGPS/GBAS, 3 SBAS
+  TopicCounts imu_counts, odom_counts, fix_counts;
+  ImuNoise imu_noise;  // from the message covariances where meaningful, else the defaults
+  OdometerNoise odom_noise;
+  std::vector<std::string> noise_sources;  // one line per value: "covariance" or "default"
+  bool utc_stamps = true;  // false: stamps are not UTC (simulated or relative ROS time), kept as is
+  int leap_seconds = 0;    // GPS - UTC applied
+  std::vector<std::string> warnings;
+};
+
+/// Reads the bag; throws std::runtime_error naming the bag and the topic or type for a bag without
+/// an IMU or odometry topic, ambiguous or unknown topics, messages that do not decode, and sensors
+/// whose stamps are not on one time base.
+BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics);
+
+}  // namespace giocal::import
