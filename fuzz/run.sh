@@ -20,7 +20,7 @@ if [ -n "${missing:-}" ]; then
 fi
 CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-fuzz" -DGIOCAL_FUZZ=ON \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-harnesses=(${GIOCAL_FUZZ_HARNESSES:-fuzz_rinex_obs fuzz_rinex_nav fuzz_csv_logs fuzz_yaml fuzz_ubx})
+harnesses=(${GIOCAL_FUZZ_HARNESSES:-fuzz_rinex_obs fuzz_rinex_nav fuzz_csv_logs fuzz_yaml fuzz_ubx fuzz_ros_message})
 cmake --build "$root/build-fuzz" -j "$(nproc)" --target "${harnesses[@]}" > /dev/null
 
 # Seed corpora.
@@ -45,6 +45,12 @@ done
 # The real F9P log in pieces of 20 kB (a whole log is slow per execution).
 if [ -d "$out/fuzz_ubx" ]; then
   split -b 20000 -a 3 "$root/data/real/ublox-f9p-walk/gnss_1730.ubx" "$out/fuzz_ubx/corpus/seed"
+fi
+# ROS messages: the first byte picks ROS 1 or CDR, then a definition, a NUL and message bytes.
+if [ -d "$out/fuzz_ros_message" ]; then
+  printf '\x00Header header\nfloat64[3] v\nstring s\nMSG: std_msgs/Header\nuint32 seq\ntime stamp\nstring frame_id\n\0\x01\0\0\0\x10\0\0\0\x20\0\0\0\x03\0\0\0imu' \
+    > "$out/fuzz_ros_message/corpus/header"
+  printf '\x01int32 a\nfloat64[] b\n\0\0\x01\0\0\x05\0\0\0\x02\0\0\0' > "$out/fuzz_ros_message/corpus/cdr"
 fi
 { printf '\x00'; cat "$sim/dataset.yaml"; } > "$out/fuzz_yaml/corpus/dataset"
 { printf '\x01'; cat "$root/config/giocal.yaml"; } > "$out/fuzz_yaml/corpus/config"

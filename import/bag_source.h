@@ -35,6 +35,10 @@ class BagSource {
 /// Opens a ROS 1 bag (.bag); throws std::runtime_error naming the file when it is not one.
 std::unique_ptr<BagSource> openRos1Bag(const std::string& path);
 
+/// Opens a rosbag2 sqlite3 database (a .db3 file, or the bag folder holding one); throws
+/// std::runtime_error naming the file when it is not one.
+std::unique_ptr<BagSource> openRos2Bag(const std::string& path);
+
 /// A ROS 1 bag file, or a rosbag2 folder (metadata.yaml and .db3) or .db3 file.
 std::unique_ptr<BagSource> openBag(const std::string& path);
 

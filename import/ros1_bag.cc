@@ -73,7 +73,7 @@ std::unique_ptr<BagSource> openRos1Bag(const std::string& path) {
 
 std::unique_ptr<BagSource> openBag(const std::string& path) {
   if (std::filesystem::is_directory(path) || std::filesystem::path(path).extension() == ".db3") {
-    throw std::runtime_error(path + ": rosbag2 (ROS 2) bags are not read yet");
+    return openRos2Bag(path);
   }
   return openRos1Bag(path);
 }
