@@ -12,9 +12,12 @@
 #include "apps/import_command.h"
 #include "apps/interrupt_watch.h"
 #include "apps/simulate_command.h"
+#include "common/geodesy/wgs84.h"
 #include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
 #include "common/io/data_error.h"
+#include "common/io/sensor_logs.h"
+#include "common/io/tum_trajectory.h"
 #include "replay/config.h"
 
 namespace po = boost::program_options;
@@ -40,6 +43,8 @@ const char* kUsage =
     "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite]\n"
     "  giocal import    --bag <file.bag> [--imu-topic t] [--odom-topic t] [--fix-topic t]\n"
     "                   --out <dir> [--overwrite]\n"
+    "  giocal export    --trajectory <trajectory.csv> --tum <file.txt> [--origin x,y,z] "
+    "[--overwrite]\n"
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
     "  terminal; --quiet turns that off)\n";
 
@@ -184,6 +189,32 @@ int runImportCommand(int argc, char** argv) {
   return 0;
 }
 
+int runExportCommand(int argc, char** argv) {
+  po::options_description opts("giocal export");
+  opts.add_options()("trajectory", po::value<std::string>()->required(),
+                     "trajectory.csv of calibrate or deadreckon, or a dataset's truth.csv")(
+      "tum", po::value<std::string>()->required(), "TUM text file to write")(
+      "origin", po::value<std::string>()->default_value(""),
+      "ECEF x,y,z of the ENU origin [m] (default: the first position)")(
+      "overwrite", "replace --tum if it exists");
+  const po::variables_map vm = parsed(argc, argv, opts);
+  const std::string out = vm["tum"].as<std::string>();
+  if (std::filesystem::exists(out) && !vm.count("overwrite")) {
+    throw std::runtime_error(out + " exists; give --overwrite to replace it");
+  }
+  const auto samples = giocal::readTruthCsv(vm["trajectory"].as<std::string>());
+  if (samples.empty()) throw std::runtime_error(vm["trajectory"].as<std::string>() + ": no rows");
+  const std::string origin = vm["origin"].as<std::string>();
+  const Eigen::Vector3d origin_e =
+      origin.empty()
+          ? giocal::ecefFromGeodetic({samples.front().lat_deg * M_PI / 180.0,
+                                      samples.front().lon_deg * M_PI / 180.0, samples.front().h})
+          : giocal::parseBasePosition(origin);
+  giocal::writeTumTrajectory(out, samples, origin_e);
+  std::cout << "giocal export: " << samples.size() << " poses -> " << out << "\n";
+  return 0;
+}
+
 int runDeadReckonCommand(int argc, char** argv) {
   po::options_description opts("giocal deadreckon");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
@@ -228,6 +259,7 @@ int main(int argc, char** argv) {
     if (command == "compare") return runCompareCommand(argc - 1, argv + 1);
     if (command == "deadreckon") return runDeadReckonCommand(argc - 1, argv + 1);
     if (command == "import") return runImportCommand(argc - 1, argv + 1);
+    if (command == "export") return runExportCommand(argc - 1, argv + 1);
     std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
     return 2;
   } catch (const giocal::Interrupted& e) {
