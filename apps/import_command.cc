@@ -21,8 +21,8 @@ namespace giocal {
 namespace {
 
 const std::vector<std::string> kUbxFiles{"rover.obs", "nav.rnx", "import.json"};
-const std::vector<std::string> kBagFiles{"imu.csv", "odom.csv", "gnss.pos", "dataset.yaml",
-                                         "import.json"};
+const std::vector<std::string> kBagFiles{"imu.csv", "odom.csv",     "gnss.pos",   "rover.obs",
+                                         "nav.rnx", "dataset.yaml", "import.json"};
 
 void refuseToOverwrite(const ImportJob& job, const std::vector<std::string>& files) {
   if (job.overwrite) return;
@@ -62,20 +62,14 @@ SppCheck sppCheck(const import::UbxLog& log) {
   return c;
 }
 
-void importUbx(const ImportJob& job, std::ostream& log) {
-  refuseToOverwrite(job, kUbxFiles);
-  import::UbxLog ubx = import::readUbxLog(job.ubx);
-  checkStop(job.stop);
+// Stages rover.obs and nav.rnx of a decoded UBX stream and returns what import.json says of it.
+nlohmann::ordered_json stageRawGnss(OutputSet& outputs, import::UbxLog& ubx, std::ostream& log) {
   const SppCheck spp = sppCheck(ubx);
-  ubx.obs.header.approx_position = spp.first_p_e;
-  checkStop(job.stop);
-
-  OutputSet outputs(job.out);
   RinexObsHeader header;
   header.program = "giocal import";
   header.marker = "UBX";
   header.receiver = "u-blox (UBX-RXM-RAWX)";
-  header.approx_position = ubx.obs.header.approx_position;
+  header.approx_position = spp.first_p_e;
   header.interval = ubx.obs.header.interval;
   header.obs_types = ubx.obs.header.obs_types;
   writeRinexObs(outputs.stagedPath("rover.obs"), header, ubx.obs.epochs);
@@ -84,8 +78,6 @@ void importUbx(const ImportJob& job, std::ostream& log) {
   for (const Ephemeris& e : ubx.nav.ephemerides)
     ++per_system[std::string(1, static_cast<char>(e.sat.sys))];
   nlohmann::ordered_json j;
-  j["files"] = {{"rover.obs", outputs.close("rover.obs")}, {"nav.rnx", outputs.close("nav.rnx")}};
-  j["source"] = job.ubx;
   j["epochs"] = ubx.obs.epochs.size();
   j["t_first"] = ubx.obs.epochs.front().t;
   j["t_last"] = ubx.obs.epochs.back().t;
@@ -108,24 +100,37 @@ void importUbx(const ImportJob& job, std::ostream& log) {
                     {"not_read", ubx.subframes_not_read}};
   j["other_messages"] = ubx.other_messages;
   j["spp_epochs_solved"] = spp.solved;
+  log << "  raw GNSS: " << ubx.obs.epochs.size() << " epochs over " << std::fixed
+      << std::setprecision(1) << ubx.obs.epochs.back().t - ubx.obs.epochs.front().t << " s, "
+      << ubx.nav.ephemerides.size() << " ephemerides";
+  for (const auto& [sys, n] : per_system) log << " " << sys << ":" << n;
+  log << "; single point positions in " << spp.solved << " of " << spp.epochs << " epochs\n";
+  log.unsetf(std::ios::fixed);
+  return j;
+}
+
+void importUbx(const ImportJob& job, std::ostream& log) {
+  refuseToOverwrite(job, kUbxFiles);
+  import::UbxLog ubx = import::readUbxLog(job.ubx);
+  checkStop(job.stop);
+  OutputSet outputs(job.out);
+  log << "giocal import: " << job.ubx << "\n";
+  nlohmann::ordered_json j;
+  const nlohmann::ordered_json gnss = stageRawGnss(outputs, ubx, log);
+  j["files"] = {{"rover.obs", outputs.close("rover.obs")}, {"nav.rnx", outputs.close("nav.rnx")}};
+  j["source"] = job.ubx;
+  j.update(gnss);
   j["warnings"] = ubx.warnings;
   outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
   outputs.commit();
-
-  log << "giocal import: " << job.ubx << ": " << ubx.obs.epochs.size() << " epochs over "
-      << std::fixed << std::setprecision(1) << ubx.obs.epochs.back().t - ubx.obs.epochs.front().t
-      << " s, " << ubx.nav.ephemerides.size() << " ephemerides";
-  for (const auto& [sys, n] : per_system) log << " " << sys << ":" << n;
-  log << "; single point positions in " << spp.solved << " of " << spp.epochs << " epochs\n";
   for (const std::string& w : ubx.warnings) log << "  warning: " << w << "\n";
   log << "  outputs: " << job.out << "/{rover.obs, nav.rnx, import.json}\n";
-  log.unsetf(std::ios::fixed);
 }
 
 void importBag(const ImportJob& job, std::ostream& log) {
   refuseToOverwrite(job, kBagFiles);
   const auto bag = import::openBag(job.bag);
-  const import::BagDataset d =
+  import::BagDataset d =
       import::readBagDataset(*bag, {job.imu_topic, job.odom_topic, job.fix_topic});
   checkStop(job.stop);
 
@@ -136,10 +141,21 @@ void importBag(const ImportJob& job, std::ostream& log) {
   desc.nav.clear();
   desc.imu_noise = d.imu_noise;
   desc.odom_noise = d.odom_noise;
+  log << "giocal import: " << job.bag << "\n";
+  nlohmann::ordered_json raw_gnss;
+  if (d.raw_gnss) {
+    raw_gnss = stageRawGnss(outputs, *d.raw_gnss, log);
+    desc.rover_obs = "rover.obs";  // no base station in a robot's bag: base_obs stays empty
+    desc.nav = {"nav.rnx"};
+  }
   writeImuCsv(outputs.stagedPath("imu.csv"), d.imu);
   writeOdomCsv(outputs.stagedPath("odom.csv"), d.odom);
   nlohmann::ordered_json files = {{"imu.csv", outputs.close("imu.csv")},
                                   {"odom.csv", outputs.close("odom.csv")}};
+  if (d.raw_gnss) {
+    files["rover.obs"] = outputs.close("rover.obs");
+    files["nav.rnx"] = outputs.close("nav.rnx");
+  }
   if (!d.fixes.empty()) {
     PosHeader h;
     h.program = "giocal import (sensor_msgs/NavSatFix of " + d.fix_counts.topic + ")";
@@ -156,6 +172,10 @@ void importBag(const ImportJob& job, std::ostream& log) {
   j["imu"] = countsJson(d.imu_counts);
   j["odometry"] = countsJson(d.odom_counts);
   if (!d.fix_counts.topic.empty()) j["fix"] = countsJson(d.fix_counts);
+  if (d.raw_gnss) {
+    raw_gnss["topics"] = {d.rawx_topic, d.sfrbx_topic};
+    j["raw_gnss"] = raw_gnss;
+  }
   j["utc_stamps"] = d.utc_stamps;
   j["leap_seconds"] = d.leap_seconds;
   j["noise_sources"] = d.noise_sources;
@@ -163,9 +183,8 @@ void importBag(const ImportJob& job, std::ostream& log) {
   outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
   outputs.commit();
 
-  log << "giocal import: " << job.bag << ": " << d.imu.size() << " IMU samples ("
-      << d.imu_counts.topic << "), " << d.odom.size() << " odometry samples ("
-      << d.odom_counts.topic << ")";
+  log << "  " << d.imu.size() << " IMU samples (" << d.imu_counts.topic << "), " << d.odom.size()
+      << " odometry samples (" << d.odom_counts.topic << ")";
   if (!d.fixes.empty())
     log << ", " << d.fixes.size() << " GNSS fixes (" << d.fix_counts.topic << ")";
   log << std::fixed << std::setprecision(1) << " over " << d.imu.back().t - d.imu.front().t
@@ -173,7 +192,8 @@ void importBag(const ImportJob& job, std::ostream& log) {
   for (const std::string& n : d.noise_sources) log << "  noise: " << n << "\n";
   for (const std::string& w : d.warnings) log << "  warning: " << w << "\n";
   log << "  outputs: " << job.out << "/{imu.csv, odom.csv, "
-      << (d.fixes.empty() ? "" : "gnss.pos, ") << "dataset.yaml, import.json}\n";
+      << (d.fixes.empty() ? "" : "gnss.pos, ") << (d.raw_gnss ? "rover.obs, nav.rnx, " : "")
+      << "dataset.yaml, import.json}\n";
   log.unsetf(std::ios::fixed);
 }
 

@@ -9,6 +9,7 @@
 
 #include "common/geodesy/wgs84.h"
 #include "common/time/gps_time.h"
+#include "import/ublox_messages.h"
 
 namespace giocal::import {
 
@@ -213,8 +214,32 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
   const bool twist_stamped = isType(odom->type, "geometry_msgs", "TwistStamped");
   std::set<std::string> names;
   for (const auto& [name, s] : streams) names.insert(name);
+  // Raw GNSS: ublox_msgs carry no header; they go through the UBX decoder in bag order.
+  std::map<std::string, RosSchema> raw;
+  for (const BagTopic& t : bag.topics()) {
+    if (!isUbloxRawx(t.type) && !isUbloxSfrbx(t.type)) continue;
+    std::string& slot = isUbloxRawx(t.type) ? out.rawx_topic : out.sfrbx_topic;
+    if (!slot.empty())
+      throw std::runtime_error(bag.path() + ": several " + t.type + " topics: " + slot + " " +
+                               t.topic);
+    slot = t.topic;
+    raw.emplace(t.topic, schemaOf(bag, t));
+    names.insert(t.topic);
+  }
+  UbxDecoder ubx(bag.path());
+  long long raw_messages = 0;
 
   bag.read(names, [&](const BagTopic& t, double received, const uint8_t* data, std::size_t size) {
+    if (raw.count(t.topic)) {
+      const std::string where = "topic " + t.topic + ", message " + std::to_string(++raw_messages);
+      try {
+        const RosMessage m = RosMessage::decode(raw.at(t.topic), bag.encoding(), data, size);
+        ubx.add(isUbloxRawx(t.type) ? rawxFrame(m) : sfrbxFrame(m), where);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(bag.path() + ": " + where + ": " + e.what());
+      }
+      return;
+    }
     Stream& s = streams.at(t.topic);
     RosMessage m;
     try {
@@ -291,6 +316,10 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
       out.fixes.push_back(f);
     }
   });
+  if (!out.rawx_topic.empty()) {
+    out.raw_gnss = ubx.finish();
+    for (const std::string& w : out.raw_gnss->warnings) out.warnings.push_back(w);
+  }
   finishBagDataset(out, streams, bag);
   return out;
 }

@@ -2,6 +2,7 @@
 // the sensor noise its message covariances give, in GPS time, and every sample it had to drop.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,11 +11,13 @@
 #include "common/io/dataset_description.h"
 #include "common/odometer/odom_sample.h"
 #include "import/bag_source.h"
+#include "import/ubx_log.h"
 
 namespace giocal::import {
 
 /// Topics to read; empty: the one topic of the type (sensor_msgs/Imu; nav_msgs/Odometry or
-/// geometry_msgs/TwistStamped; sensor_msgs/NavSatFix), an error when several are present.
+/// geometry_msgs/TwistStamped; sensor_msgs/NavSatFix), an error when several are present. Raw GNSS
+/// (ublox_msgs/RxmRAWX and RxmSFRBX) is read from the one topic of each type.
 struct BagTopics {
   std::string imu, odom, fix;
 };
@@ -32,6 +35,9 @@ struct BagDataset {
   std::vector<ImuSample> imu;
   std::vector<OdomSample> odom;
   std::vector<RtkSolution> fixes;  // NavSatFix positions: quality 5 single, 4 DGPS/GBAS, 3 SBAS
+  // Raw GNSS of ublox_msgs/RxmRAWX (with RxmSFRBX for ephemerides), when the bag has them.
+  std::optional<UbxLog> raw_gnss;
+  std::string rawx_topic, sfrbx_topic;
   TopicCounts imu_counts, odom_counts, fix_counts;
   ImuNoise imu_noise;  // from the message covariances where meaningful, else the defaults
   OdometerNoise odom_noise;

@@ -20,11 +20,6 @@ constexpr uint8_t kIdRawx = 0x15;
 constexpr uint8_t kIdSfrbx = 0x13;
 constexpr std::size_t kMaxEarlySubframes = 2000;
 
-struct NavDecoders {
-  GpsLnavAssembler lnav;
-  GalileoInavAssembler inav;
-};
-
 // Per system, the signals seen, each as its C, L, D and S observation codes.
 void setObsTypes(ObsData& obs) {
   std::map<char, std::set<std::pair<char, char>>> seen;
@@ -50,7 +45,8 @@ double medianInterval(const std::vector<ObsEpoch>& epochs) {
   return std::round(dt[dt.size() / 2] * 1e3) / 1e3;
 }
 
-void readSubframe(const UbxFrame& f, double t_rx, NavDecoders& dec, UbxLog& log) {
+void readSubframe(const UbxFrame& f, double t_rx, GpsLnavAssembler& lnav,
+                  GalileoInavAssembler& inav, UbxLog& log) {
   ++log.subframes;
   const PayloadReader p(f.payload);
   if (p.size() < 8 || p.size() != 8 + 4 * static_cast<std::size_t>(p.u1(4))) {
@@ -68,9 +64,11 @@ void readSubframe(const UbxFrame& f, double t_rx, NavDecoders& dec, UbxLog& log)
   try {
     std::optional<Ephemeris> eph;
     if ((sat.sys == GnssSystem::kGps || sat.sys == GnssSystem::kQzss) && sig == 0) {
-      eph = dec.lnav.add(sat, words, t_rx);
-    } else if (sat.sys == GnssSystem::kGalileo && (sig == 1 || sig == 5)) {
-      eph = dec.inav.add(sat, words, t_rx);
+      eph = lnav.add(sat, words, t_rx);
+    } else if (sat.sys == GnssSystem::kGalileo && (sig == 1 || sig == 5 || sig == 0)) {
+      // I/NAV is on E1-B (1) and E5b-I (5); 0 is what drivers that leave this byte reserved
+      // report. The pages' CRC tells I/NAV from anything else.
+      eph = inav.add(sat, words, t_rx);
     } else {
       ++log.subframes_not_read;
       return;
@@ -81,80 +79,78 @@ void readSubframe(const UbxFrame& f, double t_rx, NavDecoders& dec, UbxLog& log)
   }
 }
 
-std::string at(const std::string& path, long long offset) {
-  return path + ": byte " + std::to_string(offset) + ": ";
-}
-
 }  // namespace
 
-UbxLog readUbxLog(const std::string& path) {
-  UbxStream stream(path);
-  RawxDecoder rawx;
-  NavDecoders dec;
-  UbxLog log;
-  UbxFrame f;
-  long long first_rawx_bad = -1, first_out_of_order = -1;
-  std::vector<UbxFrame> early;
-  while (stream.next(f)) {
-    if (f.cls == kClassRxm && f.id == kIdRawx) {
-      try {
-        ObsEpoch e = rawx.decode(f.payload);
-        if (!log.obs.epochs.empty() && e.t <= log.obs.epochs.back().t) {
-          ++log.epochs_out_of_order;
-          if (first_out_of_order < 0) first_out_of_order = f.offset;
-          continue;
-        }
-        log.obs.epochs.push_back(std::move(e));
-      } catch (const std::exception& ex) {
-        ++log.rawx_rejected;
-        if (first_rawx_bad < 0) {
-          first_rawx_bad = f.offset;
-          log.warnings.push_back(at(path, f.offset) + ex.what());
-        }
+UbxDecoder::UbxDecoder(std::string source) : source_(std::move(source)) {}
+
+void UbxDecoder::add(const UbxFrame& f, const std::string& where) {
+  if (f.cls == kClassRxm && f.id == kIdRawx) {
+    try {
+      ObsEpoch e = rawx_.decode(f.payload);
+      if (!log_.obs.epochs.empty() && e.t <= log_.obs.epochs.back().t) {
+        if (log_.epochs_out_of_order++ == 0) first_out_of_order_ = where;
+        return;
       }
-    } else if (f.cls == kClassRxm && f.id == kIdSfrbx) {
-      // Subframes before the first epoch wait for its time (they need it for their week).
-      if (log.obs.epochs.empty()) {
-        if (early.size() < kMaxEarlySubframes) {
-          early.push_back(f);
-        } else {
-          ++log.subframes_not_read;
-        }
-        continue;
-      }
-      for (const UbxFrame& e : early) readSubframe(e, log.obs.epochs.back().t, dec, log);
-      early.clear();
-      readSubframe(f, log.obs.epochs.back().t, dec, log);
-    } else {
-      ++log.other_messages;
+      log_.obs.epochs.push_back(std::move(e));
+    } catch (const std::exception& ex) {
+      if (log_.rawx_rejected++ == 0)
+        log_.warnings.push_back(source_ + ": " + where + ": " + ex.what());
     }
+  } else if (f.cls == kClassRxm && f.id == kIdSfrbx) {
+    // Subframes before the first epoch wait for its time (they need it for their week).
+    if (log_.obs.epochs.empty()) {
+      if (early_.size() < kMaxEarlySubframes) {
+        early_.push_back(f);
+      } else {
+        ++log_.subframes_not_read;
+      }
+      return;
+    }
+    for (const UbxFrame& e : early_) readSubframe(e, log_.obs.epochs.back().t, lnav_, inav_, log_);
+    early_.clear();
+    readSubframe(f, log_.obs.epochs.back().t, lnav_, inav_, log_);
+  } else {
+    ++log_.other_messages;
   }
-  if (const auto& iono = dec.lnav.ionosphere()) {
+}
+
+UbxLog UbxDecoder::finish(const UbxStreamCounts& stream) {
+  UbxLog log = std::move(log_);
+  if (const auto& iono = lnav_.ionosphere()) {
     log.nav.gps_iono = *iono;
     log.nav.has_gps_iono = true;
   }
-  log.stream = stream.counts();
-  log.rawx = rawx.counts();
-  if (log.obs.epochs.empty()) throw std::runtime_error(path + ": no UBX-RXM-RAWX epoch in the log");
+  log.stream = stream;
+  log.rawx = rawx_.counts();
+  if (log.obs.epochs.empty()) throw std::runtime_error(source_ + ": no UBX-RXM-RAWX epoch");
   if (log.stream.bad_checksums > 0) {
-    log.warnings.push_back(at(path, log.stream.first_bad_offset) +
-                           std::to_string(log.stream.bad_checksums) +
+    log.warnings.push_back(source_ + ": byte " + std::to_string(log.stream.first_bad_offset) +
+                           ": " + std::to_string(log.stream.bad_checksums) +
                            " frames with a bad checksum skipped (first here)");
   }
-  if (log.stream.truncated_end) log.warnings.push_back(path + ": the log ends inside a frame");
+  if (log.stream.truncated_end) log.warnings.push_back(source_ + ": the log ends inside a frame");
   if (log.epochs_out_of_order > 0) {
-    log.warnings.push_back(at(path, first_out_of_order) + std::to_string(log.epochs_out_of_order) +
+    log.warnings.push_back(source_ + ": " + first_out_of_order_ + ": " +
+                           std::to_string(log.epochs_out_of_order) +
                            " RAWX epochs not after the previous one dropped (time going "
                            "backwards or repeated; first here)");
   }
   if (log.subframes_rejected > 0) {
-    log.warnings.push_back(path + ": " + std::to_string(log.subframes_rejected) +
+    log.warnings.push_back(source_ + ": " + std::to_string(log.subframes_rejected) +
                            " navigation subframes rejected (bad CRC, not LNAV, part order)");
   }
   log.obs.header.marker = "UBX";
   log.obs.header.interval = medianInterval(log.obs.epochs);
   setObsTypes(log.obs);
   return log;
+}
+
+UbxLog readUbxLog(const std::string& path) {
+  UbxStream stream(path);
+  UbxDecoder decoder(path);
+  UbxFrame f;
+  while (stream.next(f)) decoder.add(f, "byte " + std::to_string(f.offset));
+  return decoder.finish(stream.counts());
 }
 
 }  // namespace giocal::import

@@ -7,6 +7,8 @@
 
 #include "common/gnss/observation.h"
 #include "common/gnss/rinex_nav.h"
+#include "import/galileo_inav.h"
+#include "import/gps_lnav.h"
 #include "import/rawx_decoder.h"
 #include "import/ubx_stream.h"
 
@@ -25,6 +27,28 @@ struct UbxLog {
   long long other_messages = 0;       // UBX messages other than RAWX and SFRBX
   /// One line per kind of damage or skipped content, naming the file and the first byte offset.
   std::vector<std::string> warnings;
+};
+
+/// UBX messages (from a log or a bag's ublox_msgs) in arrival order to observations and
+/// ephemerides; warnings name the source and where in it a problem was met.
+class UbxDecoder {
+ public:
+  explicit UbxDecoder(std::string source);
+  UbxDecoder(const UbxDecoder&) = delete;
+  UbxDecoder& operator=(const UbxDecoder&) = delete;
+  /// One message; `where` names its place in the source ("byte 1234", "message 7 of /rawx").
+  void add(const UbxFrame& frame, const std::string& where);
+  /// The log; throws std::runtime_error naming the source when it held no RXM-RAWX epoch.
+  UbxLog finish(const UbxStreamCounts& stream = {});
+
+ private:
+  std::string source_;
+  RawxDecoder rawx_;
+  GpsLnavAssembler lnav_;
+  GalileoInavAssembler inav_;
+  UbxLog log_;
+  std::vector<UbxFrame> early_;
+  std::string first_out_of_order_;
 };
 
 /// Reads the log; throws std::runtime_error naming the file when it has no RXM-RAWX epoch.

@@ -58,11 +58,17 @@ void writeYaml(const std::string& path, const YAML::Emitter& out, const std::str
 }  // namespace
 
 void requireRawGnss(const DatasetDescription& d) {
-  if (!d.rover_obs.empty()) return;
-  throw DataError(d.pathOf("dataset.yaml"), 0,
-                  "no raw GNSS (files.rover_obs is empty): calibrate needs rover and base "
-                  "observations; calibrating from positions alone (an imported bag's gnss.pos) is "
-                  "not implemented yet");
+  if (d.rover_obs.empty()) {
+    throw DataError(d.pathOf("dataset.yaml"), 0,
+                    "no raw GNSS (files.rover_obs is empty): calibrate needs rover and base "
+                    "observations; calibrating from positions alone (an imported bag's gnss.pos) "
+                    "is not implemented yet");
+  }
+  if (d.base_obs.empty()) {
+    throw DataError(d.pathOf("dataset.yaml"), 0,
+                    "no base station (files.base_obs is empty): calibrate needs a base's "
+                    "observations of the same time; name a RINEX file of one in dataset.yaml");
+  }
 }
 
 DatasetDescription readDatasetDescription(const std::string& folder) {

@@ -62,8 +62,8 @@ struct TruthCalibration {
   Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();
 };
 
-/// Throws DataError naming dataset.yaml when the dataset has no raw GNSS (files.rover_obs empty),
-/// which calibration needs.
+/// Throws DataError naming dataset.yaml when the dataset has no raw GNSS (files.rover_obs or
+/// files.base_obs empty), which calibration needs.
 void requireRawGnss(const DatasetDescription& d);
 
 /// Reads <folder>/dataset.yaml. Throws DataError naming the file, line and problem.
