@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <ostream>
 
+#include "common/calibration/coarse_mounting.h"
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
@@ -36,13 +37,35 @@ std::vector<double> timesOf(const std::vector<T>& samples) {
   return t;
 }
 
+// The mounting the drive shows against the dataset's initial guess: a guess far outside its own
+// sigma and the data's (a misread mounting, an IMU turned by 90 degrees) is named.
+void printMountingCheck(std::ostream& out, const CalibrationPrior& c, const CoarseMounting& m) {
+  if (!m.valid) {
+    out << "  mounting from the data: not found (" << m.why_not << ")\n";
+    return;
+  }
+  const Vec3 rpy = rpyFromRotation(m.q_b_m.toRotationMatrix()) * kRadToDeg;
+  const double apart = m.q_b_m.angularDistance(c.mean.q_b_m);
+  const double allowed = 3.0 * std::sqrt(m.sigma_rpy.squaredNorm() + c.sd_rpy_b_m.squaredNorm());
+  out << std::setprecision(4) << "  mounting from the data: rpy_b_m [" << rpy.transpose()
+      << "] deg, sigma [" << (m.sigma_rpy * kRadToDeg).transpose() << "] deg; the initial guess is "
+      << apart * kRadToDeg << " deg from it\n";
+  if (apart > allowed) {
+    out << "  WARNING: the initial guess of R_b_m is " << apart * kRadToDeg
+        << " deg from the mounting the drive shows (more than 3 sigma): check "
+           "initial_calibration.q_b_m in dataset.yaml\n";
+  }
+}
+
 }  // namespace
 
 void runCheck(const std::string& folder, std::ostream& out) {
   const DatasetDescription d = readDatasetDescription(folder);
   out << "dataset " << folder << "\n";
-  printStats(out, d.imu, timesOf(readImuCsv(d.pathOf(d.imu))));
-  printStats(out, d.odom, timesOf(readOdomCsv(d.pathOf(d.odom))));
+  const std::vector<ImuSample> imu = readImuCsv(d.pathOf(d.imu));
+  const std::vector<OdomSample> odom = readOdomCsv(d.pathOf(d.odom));
+  printStats(out, d.imu, timesOf(imu));
+  printStats(out, d.odom, timesOf(odom));
   if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));
   std::vector<std::string> missing;
   if (d.rover_obs.empty()) {
@@ -77,6 +100,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
   out << std::setprecision(4) << "  initial calibration: s_v " << c.mean.s_v << " s_w "
       << c.mean.s_w << " p_b_m [" << c.mean.p_b_m.transpose() << "] m, rpy_b_m [" << rpy.transpose()
       << "] deg\n";
+  printMountingCheck(out, c, estimateMounting(imu, odom));
   if (!missing.empty()) {
     throw DataError(
         d.pathOf(missing.front()), 0,

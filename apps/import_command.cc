@@ -6,6 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "common/calibration/coarse_mounting.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/pos_file.h"
 #include "common/gnss/rinex_nav_writer.h"
@@ -14,6 +15,7 @@
 #include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
 #include "common/io/sensor_logs.h"
+#include "common/math/rotation.h"
 #include "import/bag_dataset.h"
 #include "import/ubx_log.h"
 
@@ -141,6 +143,26 @@ void importBag(const ImportJob& job, std::ostream& log) {
   desc.nav.clear();
   desc.imu_noise = d.imu_noise;
   desc.odom_noise = d.odom_noise;
+  // The bag does not say how the IMU is mounted: the drive does (or the identity stays, 5 deg).
+  const CoarseMounting mounting = estimateMounting(d.imu, d.odom);
+  nlohmann::ordered_json mounting_json = {{"found_from_data", mounting.valid}};
+  if (mounting.valid) {
+    desc.initial_calibration.mean.q_b_m = mounting.q_b_m;
+    desc.initial_calibration.sd_rpy_b_m = mounting.sigma_rpy;
+    const Eigen::Vector3d rpy = rpyFromRotation(mounting.q_b_m.toRotationMatrix()) * kRadToDeg;
+    const Eigen::Vector3d sd = mounting.sigma_rpy * kRadToDeg;
+    mounting_json["rpy_b_m_deg"] = {rpy.x(), rpy.y(), rpy.z()};
+    mounting_json["sigma_deg"] = {sd.x(), sd.y(), sd.z()};
+    mounting_json["yaw_rate_slope"] = mounting.yaw_rate_slope;
+    log << std::fixed << std::setprecision(1) << "  mounting from the data: rpy_b_m [" << rpy.x()
+        << ", " << rpy.y() << ", " << rpy.z() << "] deg, sigma [" << sd.x() << ", " << sd.y()
+        << ", " << sd.z() << "] deg (the initial guess in dataset.yaml)\n";
+    log.unsetf(std::ios::fixed);
+  } else {
+    mounting_json["why_not"] = mounting.why_not;
+    log << "  warning: mounting not found from the data (" << mounting.why_not
+        << "): the initial guess is the identity; give it in dataset.yaml\n";
+  }
   log << "giocal import: " << job.bag << "\n";
   nlohmann::ordered_json raw_gnss;
   if (d.raw_gnss) {
@@ -179,6 +201,7 @@ void importBag(const ImportJob& job, std::ostream& log) {
   j["utc_stamps"] = d.utc_stamps;
   j["leap_seconds"] = d.leap_seconds;
   j["noise_sources"] = d.noise_sources;
+  j["mounting"] = mounting_json;
   j["warnings"] = d.warnings;
   outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
   outputs.commit();
