@@ -259,8 +259,11 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     P.block<3, 3>(6, 6) = Eigen::Matrix3d::Identity() * sd_vel * sd_vel;
     P.block<3, 3>(9, 9) = Eigen::Matrix3d::Identity() * std::pow(noise.accel_bias_sigma, 2);
     P.block<3, 3>(12, 12) = sd_bg.cwiseAbs2().asDiagonal();
-    // Cross-covariance of the attitude with theta_b_m: cov(ez_b yaw, theta) = -ez_b ez_m Ptheta.
-    s.P_nav_calib.block<3, 3>(3, calib_index::kTheta) = -ez_b * (ez_m * Ptheta);
+    // Cross-covariance of the attitude with the calibration: the heading is the displacement's
+    // minus the extrinsic yaw, so cov(ez_b yaw, c) = -ez_b ez_m P_theta,c for every calibration
+    // state c the extrinsic rotation is correlated with (a prior carried over from an earlier
+    // run is fully correlated; setting the theta block alone left the joint P indefinite).
+    s.P_nav_calib.block<3, 8>(3, 0) = -ez_b * (ez_m * Pc.block<3, 8>(calib_index::kTheta, 0));
     return s;
   }
   if (good_epochs == 0) return fail("no RTK solution of the antenna (check base position and nav)");
