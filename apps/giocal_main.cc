@@ -11,6 +11,7 @@
 #include "apps/deadreckon_command.h"
 #include "apps/import_command.h"
 #include "apps/interrupt_watch.h"
+#include "apps/report_command.h"
 #include "apps/simulate_command.h"
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/rtk_config.h"
@@ -45,6 +46,7 @@ const char* kUsage =
     "                   --out <dir> [--overwrite]\n"
     "  giocal export    --trajectory <trajectory.csv> --tum <file.txt> [--origin x,y,z] "
     "[--overwrite]\n"
+    "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
     "  terminal; --quiet turns that off)\n";
 
@@ -189,6 +191,20 @@ int runImportCommand(int argc, char** argv) {
   return 0;
 }
 
+int runReportCommand(int argc, char** argv) {
+  po::options_description opts("giocal report");
+  opts.add_options()("run", po::value<std::string>()->required(),
+                     "a calibrate, compare or deadreckon output folder, or a --box-csv file")(
+      "data", po::value<std::string>()->default_value(""), "the dataset (for its truth)")(
+      "out", po::value<std::string>()->required(), "output folder")(
+      "overwrite", "replace an earlier report in --out");
+  const po::variables_map vm = parsed(argc, argv, opts);
+  giocal::runReport({vm["run"].as<std::string>(), vm["data"].as<std::string>(),
+                     vm["out"].as<std::string>(), vm.count("overwrite") > 0},
+                    std::cout);
+  return 0;
+}
+
 int runExportCommand(int argc, char** argv) {
   po::options_description opts("giocal export");
   opts.add_options()("trajectory", po::value<std::string>()->required(),
@@ -260,6 +276,7 @@ int main(int argc, char** argv) {
     if (command == "deadreckon") return runDeadReckonCommand(argc - 1, argv + 1);
     if (command == "import") return runImportCommand(argc - 1, argv + 1);
     if (command == "export") return runExportCommand(argc - 1, argv + 1);
+    if (command == "report") return runReportCommand(argc - 1, argv + 1);
     std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
     return 2;
   } catch (const giocal::Interrupted& e) {

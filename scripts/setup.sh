@@ -4,7 +4,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(cmake g++ make libeigen3-dev libceres-dev libsuitesparse-dev libboost-program-options-dev libgtest-dev
-  libyaml-cpp-dev nlohmann-json3-dev rtklib librosbag-storage-dev libboost-filesystem-dev libsqlite3-dev)
+  libyaml-cpp-dev nlohmann-json3-dev rtklib librosbag-storage-dev libboost-filesystem-dev libsqlite3-dev python3-matplotlib)
+# Packages only the tests need (scripts/test.sh: chromium, which renders the report's page).
+read -r -a extra <<< "${GIOCAL_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# giocal report on a calibrate, a compare and a deadreckon run of a simulated drive: every figure
+# exists and is not trivial, every number of the page's tables equals summary.json's, the page
+# renders in headless Chromium to a screenshot that is not blank, and a folder without outputs is
+# refused with a message. Usage: test_report.sh <giocal binary> <source dir>
+set -euo pipefail
+giocal="$1"
+src="$2"
+work="$(mktemp -d /tmp/giocal_report_test.XXXXXX)"
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+"$giocal" simulate --config "$src/config/sim/paper.yaml" --out "$work/data" --seed 7 > /dev/null
+"$giocal" compare --data "$work/data" --out "$work/cmp" --quiet > /dev/null
+"$giocal" deadreckon --data "$work/data" --calibration "$work/cmp/ekf/summary.json" --start 60 \
+  --duration 80 --out "$work/dr" --quiet > /dev/null
+"$giocal" report --run "$work/cmp" --data "$work/data" --out "$work/rep" > /dev/null
+"$giocal" report --run "$work/dr" --data "$work/data" --out "$work/rep_dr" > /dev/null
+
+for f in rep/convergence.png rep/nees.png rep/trajectory.png rep_dr/dr_error.png \
+         rep_dr/trajectory.png; do
+  [ -f "$work/$f" ] || fail "$f missing"
+  [ "$(stat -c %s "$work/$f")" -gt 10000 ] || fail "$f is $(stat -c %s "$work/$f") bytes"
+done
+[ ! -e "$work/rep/.giocal-partial."* ] 2>/dev/null || fail "staging folder left behind"
+
+# The numbers of the tables against summary.json (ekf's, fgo's, deadreckon's).
+/usr/bin/python3 - "$work" <<'PY'
+import html.parser, json, math, sys
+work = sys.argv[1]
+
+class Cells(html.parser.HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.tables, self.key = [], None
+    def handle_starttag(self, tag, attrs):
+        if tag == "table":
+            self.tables.append({})
+        a = dict(attrs)
+        self.key = a.get("data-key") if tag == "td" else None
+    def handle_data(self, data):
+        if self.key is not None:
+            self.tables[-1][self.key] = data
+            self.key = None
+
+def flat(prefix, v, out):
+    if isinstance(v, dict):
+        for k, x in v.items():
+            flat(f"{prefix}.{k}" if prefix else k, x, out)
+    elif isinstance(v, list) and v and all(isinstance(x, (int, float)) for x in v) and len(v) <= 8:
+        for i, x in enumerate(v):
+            out[f"{prefix}[{i}]"] = x
+    elif not isinstance(v, list):
+        out[prefix] = v
+
+checked = 0
+for page, summaries in (("rep", ["cmp/ekf", "cmp/fgo"]), ("rep_dr", ["dr"])):
+    p = Cells()
+    p.feed(open(f"{work}/{page}/index.html").read())
+    assert len(p.tables) == len(summaries), (page, len(p.tables))
+    for table, run in zip(p.tables, summaries):
+        expected = {}
+        flat("", json.load(open(f"{work}/{run}/summary.json")), expected)
+        for key, value in expected.items():
+            if isinstance(value, bool) or not isinstance(value, (int, float)):
+                continue
+            assert key in table, f"{run}: {key} not in the page"
+            got = float(table[key])
+            assert got == value or math.isclose(got, value, rel_tol=1e-12), (run, key, got, value)
+            checked += 1
+assert checked > 100, checked
+print(f"report tables: {checked} numbers equal summary.json's")
+PY
+
+# Headless Chromium renders the page; the screenshot is not blank.
+chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1200,1600 \
+  --screenshot="$work/shot.png" "file://$work/rep/index.html" > /dev/null 2>&1 \
+  || fail "chromium could not render the page"
+/usr/bin/python3 - "$work/shot.png" <<'PY'
+import sys
+import matplotlib.image as mpimg
+img = mpimg.imread(sys.argv[1])
+std = float(img[..., :3].std())
+assert img.shape[0] >= 1000 and std > 0.05, (img.shape, std)
+print(f"screenshot {img.shape[1]}x{img.shape[0]}, pixel standard deviation {std:.3f}")
+PY
+
+# A Monte Carlo --box-csv: box plots of errors and sigmas.
+/usr/bin/python3 - "$work/box.csv" <<'PY'
+import random, sys
+random.seed(1)
+with open(sys.argv[1], "w") as f:
+    f.write("seed,estimator,scheme,t_s,err_s_v,sd_s_v,err_yaw,sd_yaw\n")
+    for seed in range(10):
+        for scheme in ("TC", "TC-LE-OL"):
+            for t in (0, 60, 120):
+                f.write(f"{seed},ekf,{scheme},{t},{random.gauss(0, 1e-3)},{1e-3},"
+                        f"{random.gauss(0, 0.5)},{0.5}\n")
+PY
+"$giocal" report --run "$work/box.csv" --out "$work/rep_box" > /dev/null
+[ "$(stat -c %s "$work/rep_box/box.png")" -gt 10000 ] || fail "box.png too small"
+
+mkdir -p "$work/empty"
+if "$giocal" report --run "$work/empty" --out "$work/rep_empty" > "$work/msg" 2>&1; then
+  fail "a folder without outputs was accepted"
+fi
+grep -q "no calibrate, compare or deadreckon outputs found" "$work/msg" || fail "$(cat "$work/msg")"
+[ ! -e "$work/rep_empty/index.html" ] || fail "a failed report left index.html"
+if "$giocal" report --run "$work/cmp" --out "$work/rep" > "$work/msg" 2>&1; then
+  fail "an earlier report was overwritten without --overwrite"
+fi
+echo "report: ok"
