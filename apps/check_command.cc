@@ -62,8 +62,9 @@ void printMountingCheck(std::ostream& out, const CalibrationPrior& c, const Coar
 void runCheck(const std::string& folder, std::ostream& out) {
   const DatasetDescription d = readDatasetDescription(folder);
   out << "dataset " << folder << "\n";
-  const std::vector<ImuSample> imu = readImuCsv(d.pathOf(d.imu));
-  const std::vector<OdomSample> odom = readOdomCsv(d.pathOf(d.odom));
+  std::vector<std::string> warnings;
+  const std::vector<ImuSample> imu = readImuCsv(d.pathOf(d.imu), &warnings);
+  const std::vector<OdomSample> odom = readOdomCsv(d.pathOf(d.odom), &warnings);
   printStats(out, d.imu, timesOf(imu));
   printStats(out, d.odom, timesOf(odom));
   if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));
@@ -79,6 +80,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
       continue;
     }
     const ObsData obs = readRinexObs(d.pathOf(f));
+    warnings.insert(warnings.end(), obs.warnings.begin(), obs.warnings.end());
     double sats = 0;
     for (const auto& e : obs.epochs) sats += static_cast<double>(e.sats.size());
     printStats(out, f, timesOf(obs.epochs));
@@ -101,6 +103,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
       << c.mean.s_w << " p_b_m [" << c.mean.p_b_m.transpose() << "] m, rpy_b_m [" << rpy.transpose()
       << "] deg\n";
   printMountingCheck(out, c, estimateMounting(imu, odom));
+  for (const std::string& w : warnings) out << "  warning: " << w << "\n";
   if (!missing.empty()) {
     throw DataError(
         d.pathOf(missing.front()), 0,

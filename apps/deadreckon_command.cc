@@ -100,6 +100,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
       << " m, final " << r.final_error_m << " m (" << r.final_error_percent_of_distance
       << " % of the distance)\n  outputs: " << job.out
       << "/{trajectory.csv, error.csv, summary.json}\n";
+  for (const std::string& w : in.warnings) log << "  warning: " << w << "\n";
   log.unsetf(std::ios::fixed);
 }
 

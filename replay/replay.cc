@@ -125,6 +125,12 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   if (streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
   c.finish();
   CalibrationRun run = c.run();
+  // Recoverable damage the readers dropped leads the run's warnings.
+  std::vector<std::string> damage = imu->warnings();
+  for (const auto& more : {odom->warnings(), rover->warnings(), base->warnings()}) {
+    damage.insert(damage.end(), more.begin(), more.end());
+  }
+  run.warnings.insert(run.warnings.begin(), damage.begin(), damage.end());
   if (run.data_duration_s <= 0.0) {
     throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
   }

@@ -25,13 +25,16 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder) {
     if (!std::filesystem::exists(p)) throw DataError(p, 0, "file missing");
     return p;
   };
-  in.imu = readImuCsv(need(d.imu));
-  in.odom = readOdomCsv(need(d.odom));
+  in.imu = readImuCsv(need(d.imu), &in.warnings);
+  in.odom = readOdomCsv(need(d.odom), &in.warnings);
   if (in.imu.size() < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (in.odom.empty()) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
   requireRawGnss(d);
   in.rover = readRinexObs(need(d.rover_obs));
   in.base = readRinexObs(need(d.base_obs));
+  for (const auto* obs : {&in.rover, &in.base}) {
+    in.warnings.insert(in.warnings.end(), obs->warnings.begin(), obs->warnings.end());
+  }
   if (in.rover.epochs.empty()) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
   if (in.base.epochs.empty()) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
   std::vector<NavData> navs;

@@ -26,6 +26,7 @@ struct CalibrationInputs {
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   std::optional<TruthCalibration> truth;  // from truth_calib.yaml, if the folder has one
   std::vector<PositionFix> positions;     // antenna position solutions (the LC scheme)
+  std::vector<std::string> warnings;      // recoverable damage the readers dropped
 
   /// Time span covered by both the IMU and the rover observations [s].
   double dataDuration() const;

@@ -53,7 +53,8 @@ struct ObsHeader {
 struct ObsData {
   ObsHeader header;
   std::vector<ObsEpoch> epochs;
-  int skipped_special_records = 0;  // event-flag records (2-6) skipped
+  int skipped_special_records = 0;    // event-flag records (2-6) skipped
+  std::vector<std::string> warnings;  // recoverable damage dropped (RinexObsReader::warnings)
 };
 
 /// Pairs rover epochs, in time order, with the base epoch nearest in time.

@@ -20,13 +20,18 @@ class Reader {
   }
   bool next(std::string& line) {
     if (!std::getline(in_, line)) return false;
+    cut_ = in_.eof();  // the file ends without the line's newline: a write cut short
     ++line_no_;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     return true;
   }
   void need(std::string& line, const std::string& what) {
-    if (!next(line)) throw DataError(path_, line_no_, "file ends inside " + what + " (truncated)");
+    if (!next(line)) throw CutShort(path_, line_no_, "file ends inside " + what + " (truncated)");
   }
+  // The end of the file inside a record: a recording cut short, recoverable for the last epoch.
+  struct CutShort : DataError {
+    using DataError::DataError;
+  };
   [[noreturn]] void fail(const std::string& what) const { throw DataError(path_, line_no_, what); }
   double num(const std::string& line, int col, int width, const std::string& what,
              double blank = 0.0) {
@@ -47,11 +52,15 @@ class Reader {
     return v;
   }
   long lineNo() const { return line_no_; }
+  const std::string& path() const { return path_; }
+  bool lastLineCut() const { return cut_; }
+  bool atEnd() { return in_.peek() == std::char_traits<char>::eof(); }
 
  private:
   std::ifstream in_;
   std::string path_;
   long line_no_ = 0;
+  bool cut_ = false;
 };
 
 // RINEX 2 observation types mapped onto RINEX 3 codes.
@@ -148,11 +157,32 @@ struct RinexObsReader::State {
   double time_offset = 0.0;  // added to epoch times to get GPS time
   double last_t = -1e300;
   int skipped = 0;
+  // Recoverable damage dropped: epochs repeating or going back in time, a cut last epoch.
+  long out_of_order = 0, first_out_of_order = 0, bad_run = 0;
+  long cut_epoch_line = 0;
+  long epoch_line = 0;  // line of the epoch record being read
 };
+
+constexpr long kMaxBadEpochRun = 10;
 
 RinexObsReader::~RinexObsReader() = default;
 const ObsHeader& RinexObsReader::header() const { return s_->h; }
 int RinexObsReader::skippedSpecialRecords() const { return s_->skipped; }
+
+std::vector<std::string> RinexObsReader::warnings() const {
+  std::vector<std::string> out;
+  const std::string& path = s_->r.path();
+  if (s_->out_of_order > 0) {
+    out.push_back(path + ":" + std::to_string(s_->first_out_of_order) + ": " +
+                  std::to_string(s_->out_of_order) +
+                  " epochs repeating the previous time or going backwards dropped (first here)");
+  }
+  if (s_->cut_epoch_line > 0) {
+    out.push_back(path + ":" + std::to_string(s_->cut_epoch_line) +
+                  ": the file ends inside this epoch (a recording cut short): epoch dropped");
+  }
+  return out;
+}
 
 RinexObsReader::RinexObsReader(const std::string& path) : s_(std::make_unique<State>(path)) {
   Reader& r = s_->r;
@@ -225,17 +255,45 @@ RinexObsReader::RinexObsReader(const std::string& path) : s_(std::make_unique<St
 }
 
 bool RinexObsReader::next(ObsEpoch& out) {
+  const long start = s_->r.lineNo() + 1;
+  try {
+    while (true) {
+      if (!nextEpoch(out)) return false;
+      if (out.t > s_->last_t) {
+        s_->last_t = out.t;
+        s_->bad_run = 0;
+        return true;
+      }
+      // One epoch repeated or out of order is dropped; a run of them is a clock jump or a broken
+      // file.
+      if (s_->out_of_order++ == 0) s_->first_out_of_order = s_->epoch_line;
+      if (++s_->bad_run > kMaxBadEpochRun) {
+        throw DataError(
+            s_->r.path(), s_->epoch_line,
+            std::to_string(s_->bad_run) + " epochs in a row repeat the time or go backwards");
+      }
+    }
+  } catch (const Reader::CutShort&) {
+    s_->cut_epoch_line = std::max(start, s_->epoch_line);
+    return false;
+  }
+}
+
+bool RinexObsReader::nextEpoch(ObsEpoch& out) {
   Reader& r = s_->r;
   ObsHeader& h = s_->h;
   const bool v3 = s_->v3;
   const char file_sys = s_->file_sys;
   const std::vector<std::string>& v2_types = s_->v2_types;
-  double& last_t = s_->last_t;
   std::string line;
   while (r.next(line)) {
     if (rinex::trim(line).empty()) continue;
+    s_->epoch_line = r.lineNo();
     if (v3 && line[0] != '>') r.fail("expected an epoch record starting with '>'");
-    if (line.size() < (v3 ? 35u : 32u)) r.fail("epoch line is truncated");
+    if (line.size() < (v3 ? 35u : 32u)) {
+      if (r.atEnd()) throw Reader::CutShort(r.path(), r.lineNo(), "epoch line is truncated");
+      r.fail("epoch line is truncated");
+    }
     const int flag = r.integer(line, v3 ? 32 : 29, 1, "epoch flag", 0, 6);
     const int nsat = r.integer(line, v3 ? 33 : 30, 3, "number of satellites", 0, 999);
     if (flag < 0 || flag > 6 || nsat < 0) r.fail("bad epoch flag or satellite count");
@@ -258,10 +316,6 @@ bool RinexObsReader::next(ObsEpoch& out) {
     ObsEpoch ep;
     ep.t = epochTime(r, line, v3, s_->time_offset);
     ep.flag = flag;
-    if (ep.t <= last_t) {
-      r.fail(ep.t == last_t ? "duplicated epoch" : "epoch time goes backwards");
-    }
-    last_t = ep.t;
     if (v3) {
       ep.rx_clock_offset = r.num(line, 42, 15, "receiver clock offset");
       for (int s = 0; s < nsat; ++s) {
@@ -303,6 +357,7 @@ bool RinexObsReader::next(ObsEpoch& out) {
         if (isSupported(so.sat.sys)) ep.sats.push_back(std::move(so));
       }
     }
+    if (r.lastLineCut()) throw Reader::CutShort(r.path(), r.lineNo(), "last line cut short");
     out = std::move(ep);
     return true;
   }
@@ -316,6 +371,7 @@ ObsData readRinexObs(const std::string& path) {
   ObsEpoch e;
   while (reader.next(e)) data.epochs.push_back(std::move(e));
   data.skipped_special_records = reader.skippedSpecialRecords();
+  data.warnings = reader.warnings();
   return data;
 }
 

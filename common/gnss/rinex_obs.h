@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/gnss/observation.h"
 
@@ -19,11 +20,15 @@ class RinexObsReader {
   RinexObsReader& operator=(const RinexObsReader&) = delete;
 
   const ObsHeader& header() const;
-  /// The next epoch (special records skipped); false at the end of the file.
+  /// The next epoch (special records skipped); false at the end of the file. Recoverable damage
+  /// is dropped and listed by warnings(): an epoch repeating the previous time or going back (up
+  /// to 10 in a row), a last epoch the file ends inside.
   bool next(ObsEpoch& epoch);
   int skippedSpecialRecords() const;
+  std::vector<std::string> warnings() const;
 
  private:
+  bool nextEpoch(ObsEpoch& epoch);
   struct State;
   std::unique_ptr<State> s_;
 };

@@ -67,41 +67,89 @@ bool CsvRowReader::nextFields(std::vector<std::string>& fields) {
 }
 
 bool CsvRowReader::next(std::vector<double>& row) {
-  std::vector<std::string> fields;
-  if (!nextFields(fields)) return false;
-  if (fields.size() != header_.size()) {
-    throw DataError(path_, line_no_,
-                    "expected " + std::to_string(header_.size()) + " columns, found " +
-                        std::to_string(fields.size()));
-  }
-  row.assign(fields.size(), 0.0);
-  for (size_t i = 0; i < fields.size(); ++i) {
-    const std::string f = trim(fields[i]);
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(f.c_str(), &end);
-    if (f.empty() || end != f.c_str() + f.size()) {
-      throw DataError(path_, line_no_, "column '" + header_[i] + "' is not a number: '" + f + "'");
+  while (true) {
+    std::vector<std::string> fields;
+    if (!nextFields(fields)) return false;
+    if (fields.size() != header_.size()) {
+      // A last line cut short by an interrupted recording is damage; elsewhere it is structure.
+      std::vector<std::string> after;
+      const long line = line_no_;
+      if (fields.size() < header_.size() && !nextFields(after)) {
+        ++damage_.cut_last_line;
+        damage_.cut_line = line;
+        return false;
+      }
+      throw DataError(path_, line,
+                      "expected " + std::to_string(header_.size()) + " columns, found " +
+                          std::to_string(fields.size()));
     }
-    if (!std::isfinite(v)) {
-      throw DataError(path_, line_no_, "column '" + header_[i] + "' is not finite: '" + f + "'");
+    row.assign(fields.size(), 0.0);
+    bool finite = true;
+    for (size_t i = 0; i < fields.size(); ++i) {
+      const std::string f = trim(fields[i]);
+      char* end = nullptr;
+      errno = 0;
+      const double v = std::strtod(f.c_str(), &end);
+      if (f.empty() || end != f.c_str() + f.size()) {
+        throw DataError(path_, line_no_,
+                        "column '" + header_[i] + "' is not a number: '" + f + "'");
+      }
+      if (!std::isfinite(v)) {
+        if (i == 0) throw DataError(path_, line_no_, "time is not finite: '" + f + "'");
+        finite = false;
+        continue;
+      }
+      if (i < ranges_.size() && (v < ranges_[i].min || v > ranges_[i].max)) {
+        std::ostringstream msg;
+        msg << "column '" << header_[i] << "' value " << v << " outside the physical range ["
+            << ranges_[i].min << ", " << ranges_[i].max << "]";
+        throw DataError(path_, line_no_, msg.str());
+      }
+      row[i] = v;
     }
-    if (i < ranges_.size() && (v < ranges_[i].min || v > ranges_[i].max)) {
-      std::ostringstream msg;
-      msg << "column '" << header_[i] << "' value " << v << " outside the physical range ["
-          << ranges_[i].min << ", " << ranges_[i].max << "]";
-      throw DataError(path_, line_no_, msg.str());
+    long* count = nullptr;
+    long* first = nullptr;
+    if (!finite) {
+      count = &damage_.non_finite;
+      first = &damage_.first_non_finite;
+    } else if (have_prev_ && row[0] == prev_t_) {
+      count = &damage_.duplicated;
+      first = &damage_.first_duplicated;
+    } else if (have_prev_ && row[0] < prev_t_) {
+      count = &damage_.out_of_order;
+      first = &damage_.first_out_of_order;
     }
-    row[i] = v;
+    if (count) {
+      if (*count == 0) *first = line_no_;
+      ++*count;
+      if (++bad_run_ > CsvDamage::kMaxBadRun) {
+        throw DataError(path_, line_no_,
+                        std::to_string(bad_run_) +
+                            " rows in a row with NaN, a repeated time or time going backwards "
+                            "(not a single damaged row: a broken log or a clock jump)");
+      }
+      continue;
+    }
+    bad_run_ = 0;
+    have_prev_ = true;
+    prev_t_ = row[0];
+    return true;
   }
-  if (have_prev_) {
-    if (row[0] == prev_t_) throw DataError(path_, line_no_, "duplicated time " + trim(fields[0]));
-    if (row[0] < prev_t_)
-      throw DataError(path_, line_no_, "time goes backwards (" + trim(fields[0]) + ")");
-  }
-  have_prev_ = true;
-  prev_t_ = row[0];
-  return true;
+}
+
+std::vector<std::string> CsvRowReader::warnings() const {
+  std::vector<std::string> out;
+  auto add = [&](long n, long first, const std::string& what) {
+    if (n > 0) {
+      out.push_back(path_ + ":" + std::to_string(first) + ": " + std::to_string(n) + " " + what +
+                    " dropped (first here)");
+    }
+  };
+  add(damage_.non_finite, damage_.first_non_finite, "rows with NaN or infinite values");
+  add(damage_.duplicated, damage_.first_duplicated, "rows repeating the previous time");
+  add(damage_.out_of_order, damage_.first_out_of_order, "rows with time going backwards");
+  add(damage_.cut_last_line, damage_.cut_line, "last line cut short");
+  return out;
 }
 
 CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& header,
@@ -113,6 +161,7 @@ CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& h
     table.rows.push_back(row);
     table.line_numbers.push_back(reader.line());
   }
+  table.warnings = reader.warnings();
   return table;
 }
 

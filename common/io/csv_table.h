@@ -18,7 +18,17 @@ struct ColumnRange {
 
 struct CsvTable {
   std::vector<std::vector<double>> rows;
-  std::vector<long> line_numbers;  // line in the file of each row, for later messages
+  std::vector<long> line_numbers;     // line in the file of each row, for later messages
+  std::vector<std::string> warnings;  // recoverable damage dropped (CsvRowReader::warnings)
+};
+
+/// Rows a reader dropped as recoverable damage: a row with NaN or infinite values (up to
+/// kMaxBadRun in a row), a repeated time, a single time out of order, a cut last line. Anything
+/// longer or elsewhere is structural and stops the read.
+struct CsvDamage {
+  static constexpr int kMaxBadRun = 100;
+  long non_finite = 0, duplicated = 0, out_of_order = 0, cut_last_line = 0;
+  long first_non_finite = 0, first_duplicated = 0, first_out_of_order = 0, cut_line = 0;
 };
 
 /// Reads a CsvTable row by row (constant memory): the same checks as readCsvTable().
@@ -34,6 +44,9 @@ class CsvRowReader {
   bool next(std::vector<double>& row);
   long line() const { return line_no_; }  // of the row last returned
   const std::string& path() const { return path_; }
+  const CsvDamage& damage() const { return damage_; }
+  /// One line per kind of damage dropped so far, naming the file and the first line.
+  std::vector<std::string> warnings() const;
 
  private:
   bool nextFields(std::vector<std::string>& fields);
@@ -45,11 +58,14 @@ class CsvRowReader {
   long line_no_ = 0;
   bool have_prev_ = false;
   double prev_t_ = 0.0;
+  CsvDamage damage_;
+  int bad_run_ = 0;  // consecutive rows dropped
 };
 
 /// Reads `path`, whose first line must equal `header` (comma separated names, spaces ignored).
 /// Column 0 is time, which must increase strictly. Blank lines and lines starting with '#' are
-/// skipped. Throws DataError naming the file, the line and the problem.
+/// skipped; recoverable damage is dropped (CsvDamage) and listed in `warnings`. Throws DataError
+/// naming the file, the line and the problem.
 CsvTable readCsvTable(const std::string& path, const std::vector<std::string>& header,
                       const std::vector<ColumnRange>& ranges);
 

@@ -44,11 +44,13 @@ bool OdomLogReader::next(OdomSample& s) {
   return true;
 }
 
-std::vector<ImuSample> readImuCsv(const std::string& path) {
+std::vector<ImuSample> readImuCsv(const std::string& path, std::vector<std::string>* warnings) {
   ImuLogReader reader(path);
   std::vector<ImuSample> out;
   ImuSample s;
   while (reader.next(s)) out.push_back(s);
+  if (warnings)
+    for (const auto& w : reader.warnings()) warnings->push_back(w);
   return out;
 }
 
@@ -61,11 +63,13 @@ void writeImuCsv(const std::string& path, const std::vector<ImuSample>& samples)
   writeCsvTable(path, kImuHeader, rows);
 }
 
-std::vector<OdomSample> readOdomCsv(const std::string& path) {
+std::vector<OdomSample> readOdomCsv(const std::string& path, std::vector<std::string>* warnings) {
   OdomLogReader reader(path);
   std::vector<OdomSample> out;
   OdomSample s;
   while (reader.next(s)) out.push_back(s);
+  if (warnings)
+    for (const auto& w : reader.warnings()) warnings->push_back(w);
   return out;
 }
 
@@ -76,7 +80,7 @@ void writeOdomCsv(const std::string& path, const std::vector<OdomSample>& sample
   writeCsvTable(path, kOdomHeader, rows);
 }
 
-std::vector<TruthSample> readTruthCsv(const std::string& path) {
+std::vector<TruthSample> readTruthCsv(const std::string& path, std::vector<std::string>* warnings) {
   const ColumnRange vel{-500.0, 500.0}, unit{-1.0001, 1.0001};
   const CsvTable table = readCsvTable(path, kTruthHeader,
                                       {kTime,
@@ -90,6 +94,8 @@ std::vector<TruthSample> readTruthCsv(const std::string& path) {
                                        unit,
                                        unit,
                                        unit});
+  if (warnings)
+    for (const auto& w : table.warnings) warnings->push_back(w);
   std::vector<TruthSample> out(table.rows.size());
   for (size_t i = 0; i < out.size(); ++i) {
     const auto& r = table.rows[i];

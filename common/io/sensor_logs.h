@@ -28,6 +28,7 @@ class ImuLogReader {
  public:
   explicit ImuLogReader(const std::string& path);
   bool next(ImuSample& s);  // false at the end; throws DataError on a bad row
+  std::vector<std::string> warnings() const { return rows_.warnings(); }  // damage dropped
 
  private:
   CsvRowReader rows_;
@@ -38,20 +39,25 @@ class OdomLogReader {
  public:
   explicit OdomLogReader(const std::string& path);
   bool next(OdomSample& s);
+  std::vector<std::string> warnings() const { return rows_.warnings(); }
 
  private:
   CsvRowReader rows_;
   std::vector<double> row_;
 };
 
-std::vector<ImuSample> readImuCsv(const std::string& path);
+/// With `warnings`, the recoverable damage dropped (CsvDamage) is appended to it.
+std::vector<ImuSample> readImuCsv(const std::string& path,
+                                  std::vector<std::string>* warnings = nullptr);
 void writeImuCsv(const std::string& path, const std::vector<ImuSample>& samples);
 
-std::vector<OdomSample> readOdomCsv(const std::string& path);
+std::vector<OdomSample> readOdomCsv(const std::string& path,
+                                    std::vector<std::string>* warnings = nullptr);
 void writeOdomCsv(const std::string& path, const std::vector<OdomSample>& samples);
 
 /// Quaternions must have unit norm within 1e-3 and are normalized on reading.
-std::vector<TruthSample> readTruthCsv(const std::string& path);
+std::vector<TruthSample> readTruthCsv(const std::string& path,
+                                      std::vector<std::string>* warnings = nullptr);
 void writeTruthCsv(const std::string& path, const std::vector<TruthSample>& samples);
 /// The truth.csv header and one row of it (for writers that stream rows).
 const std::vector<std::string>& truthCsvHeader();

@@ -135,9 +135,17 @@ TEST(RinexObs, TruncatedAndMalformedFilesAreReported) {
   test::TempDir dir;
   for (const std::string& src : {kGsi + "07590920.05o", kMosaic + "rover.obs"}) {
     const std::string text = slurp(src);
-    // Cut in the middle of an epoch's records.
+    // Cut in the middle of an epoch's records (issue 23): the epochs before are read, the cut one
+    // is dropped with a warning naming its line.
     const std::string cut = dir.write("cut.obs", text.substr(0, text.size() / 2));
-    expectFileLineError([&] { readRinexObs(cut); }, cut, "truncated");
+    const ObsData whole = readRinexObs(src);
+    const ObsData part = readRinexObs(cut);
+    EXPECT_GT(part.epochs.size(), whole.epochs.size() / 3);
+    EXPECT_LT(part.epochs.size(), whole.epochs.size() * 2 / 3);
+    EXPECT_EQ(part.epochs.back().t, whole.epochs[part.epochs.size() - 1].t);
+    ASSERT_EQ(part.warnings.size(), 1u);
+    EXPECT_NE(part.warnings[0].find("the file ends inside this epoch"), std::string::npos);
+    EXPECT_EQ(part.warnings[0].rfind(cut + ":", 0), 0u) << part.warnings[0];
     // No header end.
     const std::string nohdr =
         dir.write("nohdr.obs", text.substr(0, text.find("END OF HEADER") - 10));
@@ -155,7 +163,13 @@ TEST(RinexObs, TruncatedAndMalformedFilesAreReported) {
   const size_t e1 = swapped.find(" 05  4  2  0  0  0.0000000");
   swapped.replace(e1, 26, " 05  4  2  0  1  0.0000000");
   const std::string sp = dir.write("swap.obs", swapped);
-  expectFileLineError([&] { readRinexObs(sp); }, sp, "backwards");
+  const ObsData swapped_data = readRinexObs(sp);
+  EXPECT_EQ(swapped_data.epochs.size(), readRinexObs(kGsi + "07590920.05o").epochs.size() - 2);
+  ASSERT_EQ(swapped_data.warnings.size(), 1u);  // the epochs at 00:00:30 and 00:01:00 again
+  EXPECT_NE(swapped_data.warnings[0].find(
+                "2 epochs repeating the previous time or going backwards dropped"),
+            std::string::npos)
+      << swapped_data.warnings[0];
   // Not a RINEX file at all, and an empty one.
   const std::string junk = dir.write("junk.obs", "hello\nworld\n");
   EXPECT_THROW(readRinexObs(junk), DataError);
