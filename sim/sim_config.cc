@@ -27,23 +27,26 @@ SimConfig readSimConfig(const std::string& path) {
     if (!y.root()["trajectory"][key].IsSequence())
       y.fail("trajectory." + key, "needs a list of segments");
     const YAML::Node segs = y.root()["trajectory"][key];
-    for (int lap = 0; lap < repeat; ++lap) {
-      for (size_t i = 0; i < segs.size(); ++i) {
-        YAML::Node wrapper;
-        wrapper["s"] = segs[i];
-        const YamlFields s(path, wrapper);
-        SegmentSpec spec;
-        spec.type = s.text("s.type");
-        spec.duration = s.numberOr("s.duration", 0.0, 0.0, 1e6);
-        spec.speed = s.numberOr("s.speed", -1.0, 0.0, 30.0);
-        spec.radius = s.numberOr("s.radius", 0.0, 0.0, 1e5);
-        spec.direction = s.textOr("s.direction", "left");
-        spec.angle_deg = s.numberOr("s.angle_deg", 0.0, 0.0, 1e5);
-        spec.rate_deg_s = s.numberOr("s.rate_deg_s", 0.0, -360.0, 360.0);
-        spec.transition = s.numberOr("s.transition", 1.0, 0.0, 100.0);
-        c.segments.push_back(spec);
-      }
+    // Each segment is read once and repeated: reading the YAML again per lap made a preset of
+    // 1000 laps take 3 s to read (9 minutes under the fuzzer's sanitizers).
+    std::vector<SegmentSpec> once;
+    for (size_t i = 0; i < segs.size(); ++i) {
+      YAML::Node wrapper;
+      wrapper["s"] = segs[i];
+      const YamlFields s(path, wrapper);
+      SegmentSpec spec;
+      spec.type = s.text("s.type");
+      spec.duration = s.numberOr("s.duration", 0.0, 0.0, 1e6);
+      spec.speed = s.numberOr("s.speed", -1.0, 0.0, 30.0);
+      spec.radius = s.numberOr("s.radius", 0.0, 0.0, 1e5);
+      spec.direction = s.textOr("s.direction", "left");
+      spec.angle_deg = s.numberOr("s.angle_deg", 0.0, 0.0, 1e5);
+      spec.rate_deg_s = s.numberOr("s.rate_deg_s", 0.0, -360.0, 360.0);
+      spec.transition = s.numberOr("s.transition", 1.0, 0.0, 100.0);
+      once.push_back(spec);
     }
+    for (int lap = 0; lap < repeat; ++lap)
+      c.segments.insert(c.segments.end(), once.begin(), once.end());
   };
   if (!y.has("trajectory.segments"))
     y.fail("trajectory", "needs 'segments', a list of motion segments");

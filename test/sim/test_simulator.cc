@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "common/imu/imu_preintegration.h"
@@ -197,6 +199,32 @@ TEST(Simulator, BadConfigIsReportedWithFileAndLine) {
   }
   EXPECT_THROW(sim::parseGpsTime("2024-13-01 00:00:00"), std::invalid_argument);
   EXPECT_THROW(sim::parseGpsTime("yesterday"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace giocal
+
+namespace giocal {
+namespace {
+
+// A fuzzer-found timeout (issue 23): the loop's segments were read from the YAML again for every
+// lap, so a preset of 1000 laps took 3 s to read (over 5 s under the sanitizers).
+TEST(SimConfig, ManyLapsReadFast) {
+  std::ifstream in(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string preset =
+      std::regex_replace(text.str(), std::regex("\\n  laps: [0-9]+"), "\n  laps: 1000");
+  preset = std::regex_replace(
+      preset, std::regex("nav_file: [^ \\n]+"),
+      "nav_file: " + std::string(GIOCAL_SOURCE_DIR) + "/data/real/mosaic-static-nagoya/base.nav");
+  test::TempDir dir;
+  const std::string path = dir.write("many_laps.yaml", preset);
+  const auto t0 = std::chrono::steady_clock::now();
+  const sim::SimConfig c = sim::readSimConfig(path);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(c.segments.size(), 2u + 4u * 1000u);
+  EXPECT_LT(s, 0.5);
 }
 
 }  // namespace
