@@ -25,13 +25,6 @@ double sisaMetres(int n) {
   return -1.0;
 }
 
-double nearTime(double sow, double t_rx) {
-  const GpsWeekTime wt = weekTimeFromGpsSeconds(t_rx);
-  double t = gpsSecondsFromWeekTime({wt.week, sow});
-  t -= kSecondsPerWeek * std::round((t - t_rx) / kSecondsPerWeek);
-  return t;
-}
-
 }  // namespace
 
 uint32_t crc24q(const BitBuffer& buf, int bits) {
@@ -55,7 +48,7 @@ std::optional<Ephemeris> decodeInav(const SatId& sat, const std::array<BitBuffer
   e.sat = sat;
   e.iode = iod;
   e.data_source = kInavSource;
-  e.toe = nearTime(w[0].u(16, 14) * 60.0, t_rx);
+  e.toe = gpsSecondsNear(w[0].u(16, 14) * 60.0, t_rx);
   e.m0 = scaled(w[0].s(30, 32), -31) * kPi;
   e.e = scaled(w[0].u(62, 32), -33);
   e.sqrt_a = scaled(w[0].u(94, 32), -19);
@@ -75,7 +68,7 @@ std::optional<Ephemeris> decodeInav(const SatId& sat, const std::array<BitBuffer
 
   e.cic = scaled(w[3].s(22, 16), -29);
   e.cis = scaled(w[3].s(38, 16), -29);
-  e.toc = nearTime(w[3].u(54, 14) * 60.0, t_rx);
+  e.toc = gpsSecondsNear(w[3].u(54, 14) * 60.0, t_rx);
   e.af0 = scaled(w[3].s(68, 31), -34);
   e.af1 = scaled(w[3].s(99, 21), -46);
   e.af2 = scaled(w[3].s(120, 6), -59);

@@ -25,14 +25,6 @@ double uraMetres(int index) {
   return index >= 0 && index < 15 ? kUra[index] : 6144.0;
 }
 
-// The time of a time of week near t_rx (the week is whichever puts it within half a week).
-double nearTime(double sow, double t_rx) {
-  const GpsWeekTime wt = weekTimeFromGpsSeconds(t_rx);
-  double t = gpsSecondsFromWeekTime({wt.week, sow});
-  t -= kSecondsPerWeek * std::round((t - t_rx) / kSecondsPerWeek);
-  return t;
-}
-
 }  // namespace
 
 std::optional<Ephemeris> decodeLnav(const SatId& sat, const BitBuffer& sf1, const BitBuffer& sf2,
@@ -49,7 +41,7 @@ std::optional<Ephemeris> decodeLnav(const SatId& sat, const BitBuffer& sf1, cons
   e.accuracy = uraMetres(static_cast<int>(sf1.u(at(3, 13), 4)));
   e.health = static_cast<int>(sf1.u(at(3, 17), 6));
   e.tgd = scaled(sf1.s(at(7, 17), 8), -31);
-  e.toc = nearTime(scaled(sf1.u(at(8, 9), 16), 4), t_rx);
+  e.toc = gpsSecondsNear(scaled(sf1.u(at(8, 9), 16), 4), t_rx);
   e.af2 = scaled(sf1.s(at(9, 1), 8), -55);
   e.af1 = scaled(sf1.s(at(9, 9), 16), -43);
   e.af0 = scaled(sf1.s(at(10, 1), 22), -31);
@@ -61,7 +53,7 @@ std::optional<Ephemeris> decodeLnav(const SatId& sat, const BitBuffer& sf1, cons
   e.e = scaled(sf2.u2(at(6, 17), 8, at(7, 1), 24), -33);
   e.cus = scaled(sf2.s(at(8, 1), 16), -29);
   e.sqrt_a = scaled(sf2.u2(at(8, 17), 8, at(9, 1), 24), -19);
-  e.toe = nearTime(scaled(sf2.u(at(10, 1), 16), 4), t_rx);
+  e.toe = gpsSecondsNear(scaled(sf2.u(at(10, 1), 16), 4), t_rx);
 
   e.cic = scaled(sf3.s(at(3, 1), 16), -29);
   e.omega0 = scaled(sf3.s2(at(3, 17), 8, at(4, 1), 24), -31) * kPi;

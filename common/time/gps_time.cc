@@ -127,4 +127,9 @@ std::string formatCalendar(const CalendarTime& c, int decimals) {
   return buf;
 }
 
+double gpsSecondsNear(double sow, double t_near) {
+  const double t = gpsSecondsFromWeekTime({weekTimeFromGpsSeconds(t_near).week, sow});
+  return t - kSecondsPerWeek * std::round((t - t_near) / kSecondsPerWeek);
+}
+
 }  // namespace giocal

@@ -36,6 +36,10 @@ CalendarTime calendarFromGpsSeconds(double t);
 GpsWeekTime weekTimeFromGpsSeconds(double t);
 double gpsSecondsFromWeekTime(const GpsWeekTime& wt);
 
+/// The GPS time of a time of week `sow` in the week that puts it within half a week of `t_near`
+/// (navigation messages give times of week whose week the receiver's time tells).
+double gpsSecondsNear(double sow, double t_near);
+
 /// GPS - UTC in seconds (leap seconds since 1980) at a UTC instant, given as seconds since
 /// 1980-01-06 00:00:00 counted in the UTC scale.
 int leapSecondsAtUtc(double utc_seconds);

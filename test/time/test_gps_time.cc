@@ -61,3 +61,16 @@ TEST(GpsTime, FormatRoundsWithoutSixtySeconds) {
 
 }  // namespace
 }  // namespace giocal
+
+namespace giocal {
+namespace {
+
+TEST(GpsTime, TimeOfWeekNearAReferenceCrossesWeekEnds) {
+  const double t = gpsSecondsFromWeekTime({2381, 604790.0});  // 10 s before the week ends
+  EXPECT_DOUBLE_EQ(gpsSecondsNear(604790.0, t), t);
+  EXPECT_DOUBLE_EQ(gpsSecondsNear(7200.0, t), gpsSecondsFromWeekTime({2382, 7200.0}));
+  EXPECT_DOUBLE_EQ(gpsSecondsNear(590000.0, t + 20.0), gpsSecondsFromWeekTime({2381, 590000.0}));
+}
+
+}  // namespace
+}  // namespace giocal
