@@ -2,9 +2,11 @@
 
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <ostream>
 
 #include "common/calibration/coarse_mounting.h"
+#include "common/calibration/dataset_diagnosis.h"
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
@@ -72,6 +74,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
   if (d.rover_obs.empty()) {
     out << "  no raw GNSS (files.rover_obs is empty): IMU and odometry only\n";
   }
+  std::map<std::string, ObsData> gnss;
   for (const std::string& f : {d.rover_obs, d.base_obs}) {
     if (f.empty()) continue;
     if (!std::filesystem::exists(d.pathOf(f))) {
@@ -79,7 +82,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
       missing.push_back(f);
       continue;
     }
-    const ObsData obs = readRinexObs(d.pathOf(f));
+    const ObsData& obs = gnss[f] = readRinexObs(d.pathOf(f));
     warnings.insert(warnings.end(), obs.warnings.begin(), obs.warnings.end());
     double sats = 0;
     for (const auto& e : obs.epochs) sats += static_cast<double>(e.sats.size());
@@ -88,14 +91,15 @@ void runCheck(const std::string& folder, std::ostream& out) {
         << sats / std::max<double>(1.0, static_cast<double>(obs.epochs.size()))
         << " satellites per epoch (GPS, Galileo, BeiDou, QZSS)\n";
   }
+  std::vector<NavData> navs;
   for (const std::string& f : d.nav) {
     if (!std::filesystem::exists(d.pathOf(f))) {
       out << "  " << f << ": MISSING\n";
       missing.push_back(f);
       continue;
     }
-    const NavData nav = readRinexNav(d.pathOf(f));
-    out << "  " << f << ": " << nav.ephemerides.size() << " broadcast ephemerides\n";
+    navs.push_back(readRinexNav(d.pathOf(f)));
+    out << "  " << f << ": " << navs.back().ephemerides.size() << " broadcast ephemerides\n";
   }
   const auto& c = d.initial_calibration;
   const Vec3 rpy = rpyFromRotation(c.mean.q_b_m.toRotationMatrix()) * kRadToDeg;
@@ -104,6 +108,21 @@ void runCheck(const std::string& folder, std::ostream& out) {
       << "] deg\n";
   printMountingCheck(out, c, estimateMounting(imu, odom));
   for (const std::string& w : warnings) out << "  warning: " << w << "\n";
+  std::vector<std::string> unusable;
+  if (missing.empty() && gnss.count(d.rover_obs) && gnss.count(d.base_obs)) {
+    const NavData nav = mergeNav(navs);
+    unusable = diagnoseDataset({gnss.at(d.rover_obs), gnss.at(d.base_obs), nav, odom,
+                                d.pathOf(d.rover_obs), d.pathOf(d.base_obs),
+                                d.nav.empty() ? d.pathOf("dataset.yaml") : d.pathOf(d.nav.front()),
+                                d.pathOf(d.odom)});
+  }
+  for (const std::string& u : unusable) out << "  unusable: " << u << "\n";
+  if (!unusable.empty()) {
+    throw std::runtime_error("the dataset cannot be calibrated: " + unusable.front() +
+                             (unusable.size() > 1
+                                  ? " (and " + std::to_string(unusable.size() - 1) + " more above)"
+                                  : std::string()));
+  }
   if (!missing.empty()) {
     throw DataError(
         d.pathOf(missing.front()), 0,

@@ -229,26 +229,8 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
   UbxDecoder ubx(bag.path());
   long long raw_messages = 0;
 
-  bag.read(names, [&](const BagTopic& t, double received, const uint8_t* data, std::size_t size) {
-    if (raw.count(t.topic)) {
-      const std::string where = "topic " + t.topic + ", message " + std::to_string(++raw_messages);
-      try {
-        const RosMessage m = RosMessage::decode(raw.at(t.topic), bag.encoding(), data, size);
-        ubx.add(isUbloxRawx(t.type) ? rawxFrame(m) : sfrbxFrame(m), where);
-      } catch (const std::exception& e) {
-        throw std::runtime_error(bag.path() + ": " + where + ": " + e.what());
-      }
-      return;
-    }
-    Stream& s = streams.at(t.topic);
-    RosMessage m;
-    try {
-      m = RosMessage::decode(s.schema, bag.encoding(), data, size);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(bag.path() + ": topic " + t.topic + ", message " +
-                               std::to_string(s.counts->read + 1) + ": " + e.what());
-    }
-    ++s.counts->read;
+  // One decoded message of an IMU, odometry or fix topic into the logs.
+  auto readSample = [&](Stream& s, const RosMessage& m, double received) {
     const double stamp = m.time("header.stamp");
     if (!std::isfinite(stamp) || stamp <= s.last) {
       ++s.counts->out_of_order;
@@ -294,8 +276,12 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
         ++s.counts->no_fix;
         return;
       }
-      Geodetic g{m.number("latitude") * M_PI / 180.0, m.number("longitude") * M_PI / 180.0,
-                 m.number("altitude")};
+      const double lat = m.number("latitude"), lon = m.number("longitude");
+      if (!(std::abs(lat) <= 90.0 && std::abs(lon) <= 180.0)) {
+        ++s.counts->non_finite;  // not a position on the Earth
+        return;
+      }
+      Geodetic g{lat * M_PI / 180.0, lon * M_PI / 180.0, m.number("altitude")};
       Eigen::Matrix3d cov_enu;
       for (int k = 0; k < 9; ++k)
         cov_enu(k / 3, k % 3) = m.number("position_covariance[" + std::to_string(k) + "]");
@@ -315,6 +301,26 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
       f.cov_e = R_e_n * cov_enu * R_e_n.transpose();
       out.fixes.push_back(f);
     }
+  };
+  bag.read(names, [&](const BagTopic& t, double received, const uint8_t* data, std::size_t size) {
+    if (raw.count(t.topic)) {
+      const std::string where = "topic " + t.topic + ", message " + std::to_string(++raw_messages);
+      try {
+        const RosMessage m = RosMessage::decode(raw.at(t.topic), bag.encoding(), data, size);
+        ubx.add(isUbloxRawx(t.type) ? rawxFrame(m) : sfrbxFrame(m), where);
+      } catch (const std::exception& e) {
+        throw std::runtime_error(bag.path() + ": " + where + ": " + e.what());
+      }
+      return;
+    }
+    Stream& s = streams.at(t.topic);
+    try {
+      readSample(s, RosMessage::decode(s.schema, bag.encoding(), data, size), received);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(bag.path() + ": topic " + t.topic + ", message " +
+                               std::to_string(s.counts->read + 1) + ": " + e.what());
+    }
+    ++s.counts->read;
   });
   if (!out.rawx_topic.empty()) {
     out.raw_gnss = ubx.finish();

@@ -9,8 +9,8 @@ namespace {
 
 constexpr uint8_t kSync1 = 0xB5;
 constexpr uint8_t kSync2 = 0x62;
-// Longest payload giocal reads (RXM-RAWX with 255 measurements); a longer length field is damage.
-constexpr std::size_t kMaxPayload = 16 + 32 * 255;
+// Every length the 16-bit field can hold: a frame of a message giocal does not read is skipped
+// whole (its checksum checked), so sync characters inside its payload are never taken for frames.
 
 void checksum(const uint8_t* bytes, std::size_t n, uint8_t& a, uint8_t& b) {
   a = 0;
@@ -63,11 +63,6 @@ bool UbxStream::next(UbxFrame& frame) {
       return false;
     }
     const std::size_t len = buf_[pos_ + 4] | static_cast<std::size_t>(buf_[pos_ + 5]) << 8;
-    if (len > kMaxPayload) {  // not a frame giocal reads, or damage: resume the search
-      ++pos_;
-      ++counts_.skipped_bytes;
-      continue;
-    }
     if (!fill(8 + len)) {
       counts_.truncated_end = true;
       counts_.skipped_bytes += static_cast<long long>(buf_.size() - pos_);

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 
+#include "common/calibration/dataset_diagnosis.h"
 #include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
@@ -75,6 +76,19 @@ Eigen::Vector3d basePosition(const DatasetDescription& d, const ObsHeader& base_
   return p;
 }
 
+// The dataset's unusable conditions (dataset_diagnosis), its files read again (only after a
+// failed initialization).
+std::vector<std::string> diagnoseFolder(const DatasetDescription& d, double max_base_offset) {
+  const ObsData rover = readRinexObs(d.pathOf(d.rover_obs));
+  const ObsData base = readRinexObs(d.pathOf(d.base_obs));
+  std::vector<NavData> navs;
+  for (const std::string& n : d.nav) navs.push_back(readRinexNav(d.pathOf(n)));
+  const NavData nav = mergeNav(navs);
+  const std::vector<OdomSample> odom = readOdomCsv(d.pathOf(d.odom));
+  return diagnoseDataset({rover, base, nav, odom, d.pathOf(d.rover_obs), d.pathOf(d.base_obs),
+                          d.pathOf(d.nav.front()), d.pathOf(d.odom), max_base_offset});
+}
+
 }  // namespace
 
 std::optional<TruthCalibration> readFolderTruth(const std::string& folder) {
@@ -123,7 +137,17 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   if (streams[1].count == 0) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
   if (streams[2].count == 0) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
   if (streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
-  c.finish();
+  try {
+    c.finish();
+  } catch (const std::runtime_error& e) {
+    // A failed initialization says which condition of the data it met, when one is found.
+    const std::vector<std::string> why = diagnoseFolder(d, job.options.max_base_offset);
+    if (why.empty()) throw;
+    std::string text = std::string(e.what()) + "; the dataset:";
+    for (const std::string& w : why) text += " " + w + ";";
+    text.pop_back();
+    throw std::runtime_error(text);
+  }
   CalibrationRun run = c.run();
   // Recoverable damage the readers dropped leads the run's warnings.
   std::vector<std::string> damage = imu->warnings();

@@ -122,7 +122,7 @@ std::string formatCalendar(const CalendarTime& c, int decimals) {
   const CalendarTime r = calendarFromGpsSeconds(t);
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%04d/%02d/%02d %02d:%02d:%0*.*f", r.year, r.month, r.day, r.hour,
-                r.minute, decimals + 3, decimals,
+                r.minute, decimals > 0 ? decimals + 3 : 2, decimals,
                 std::fabs(r.second) < 0.5 / scale ? 0.0 : r.second);
   return buf;
 }

@@ -74,3 +74,15 @@ TEST(GpsTime, TimeOfWeekNearAReferenceCrossesWeekEnds) {
 
 }  // namespace
 }  // namespace giocal
+
+namespace giocal {
+namespace {
+
+TEST(GpsTime, CalendarTextWithoutDecimals) {
+  const CalendarTime c{2024, 6, 24, 8, 20, 30.0};
+  EXPECT_EQ(formatCalendar(c, 0), "2024/06/24 08:20:30");
+  EXPECT_EQ(formatCalendar(c, 3), "2024/06/24 08:20:30.000");
+}
+
+}  // namespace
+}  // namespace giocal
