@@ -135,6 +135,7 @@ void importBag(const ImportJob& job, std::ostream& log) {
   import::BagDataset d =
       import::readBagDataset(*bag, {job.imu_topic, job.odom_topic, job.fix_topic});
   checkStop(job.stop);
+  log << "giocal import: " << job.bag << "\n";
 
   OutputSet outputs(job.out);
   DatasetDescription desc;
@@ -163,7 +164,6 @@ void importBag(const ImportJob& job, std::ostream& log) {
     log << "  warning: mounting not found from the data (" << mounting.why_not
         << "): the initial guess is the identity; give it in dataset.yaml\n";
   }
-  log << "giocal import: " << job.bag << "\n";
   nlohmann::ordered_json raw_gnss;
   if (d.raw_gnss) {
     raw_gnss = stageRawGnss(outputs, *d.raw_gnss, log);
