@@ -262,8 +262,7 @@ def main(argv):
             "".join(tables) + "</body></html>\n")
     with open(os.path.join(out, "index.html"), "w") as f:
         f.write(page)
-    print(f"giocal report: {len(figures)} figures, {len(tables)} tables -> "
-          f"{os.path.join(out, 'index.html')}")
+    print(f"giocal report: {len(figures)} figures, {len(tables)} tables")
     return 0
 
 
