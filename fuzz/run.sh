@@ -20,14 +20,15 @@ if [ -n "${missing:-}" ]; then
 fi
 CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-fuzz" -DGIOCAL_FUZZ=ON \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-harnesses=(${GIOCAL_FUZZ_HARNESSES:-fuzz_rinex_obs fuzz_rinex_nav fuzz_csv_logs fuzz_yaml fuzz_ubx fuzz_ros_message})
+all_harnesses=(fuzz_rinex_obs fuzz_rinex_nav fuzz_csv_logs fuzz_yaml fuzz_ubx fuzz_ros_message)
+read -r -a harnesses <<< "${GIOCAL_FUZZ_HARNESSES:-${all_harnesses[*]}}"
 cmake --build "$root/build-fuzz" -j "$(nproc)" --target "${harnesses[@]}" > /dev/null
 
 # Seed corpora.
 rm -rf "$out" && mkdir -p "$out"
 sim="$out/sim"
 "$root/build/apps/giocal" simulate --config "$root/config/sim/paper.yaml" --out "$sim" > /dev/null
-for h in "${harnesses[@]}"; do mkdir -p "$out/$h/corpus"; done
+for h in "${all_harnesses[@]}"; do mkdir -p "$out/$h/corpus"; done  # every seed set is made
 k=0
 for f in "$root"/data/real/*/*.obs "$root"/data/real/*/*o "$sim/rover.obs"; do
   [ -f "$f" ] && head -c 60000 "$f" > "$out/fuzz_rinex_obs/corpus/seed$((k++))"
