@@ -48,7 +48,7 @@ EpochOutcome EkfCore::position(double t, CalibrationRun& run) {
   const PositionFix* fix = fixAt(sensors_.positions, t, kPositionTolerance);
   if (!fix) return out;
   filter_.propagateTo(t);
-  const PositionModel model = positionModelOf(filter_.frame(), *fix);
+  const PositionModel model = positionModelOf(filter_.frame(), *fix, options_.lc);
   out.used = filter_
                  .update(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg},
                          chi2Quantile(options_.chi2_probability, 3))

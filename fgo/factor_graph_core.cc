@@ -289,7 +289,7 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   if (o_.loosely_coupled) {
     fix = fixAt(in_.positions, e.t, kPositionTolerance);
     if (fix) {
-      w_.addFactor({std::make_shared<PositionModel>(positionModelOf(frame_, *fix)),
+      w_.addFactor({std::make_shared<PositionModel>(positionModelOf(frame_, *fix, o_.lc)),
                     {e.p, e.q, kPbg},
                     0.0,
                     tagged("position", e.k)});
@@ -321,7 +321,7 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
 bool FactorGraphCore::rejectPosition(const FgoEpoch& e, const PositionFix& fix) {
   // As the EKF's gate, on the solved window: a solution this far off (a wrong fix under trees)
   // leaves the window instead of pulling it.
-  const PositionModel model = positionModelOf(frame_, fix);
+  const PositionModel model = positionModelOf(frame_, fix, o_.lc);
   const double* params[3] = {w_.value(e.p).data(), w_.value(e.q).data(), w_.value(kPbg).data()};
   Eigen::VectorXd r;
   model.evaluate(params, r, nullptr);

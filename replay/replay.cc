@@ -100,7 +100,9 @@ std::optional<TruthCalibration> readFolderTruth(const std::string& folder) {
 CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink) {
   const auto t0 = std::chrono::steady_clock::now();
   const DatasetDescription d = readDatasetDescription(folder);
-  requireRawGnss(d);
+  // Without raw GNSS the LC scheme's solutions are the only GNSS (an imported bag's gnss.pos).
+  const bool raw = !d.rover_obs.empty() || job.positions.empty();
+  if (raw) requireRawGnss(d);
   auto need = [&](const std::string& name) {
     const std::string p = d.pathOf(name);
     if (!std::filesystem::exists(p)) throw DataError(p, 0, "file missing");
@@ -108,40 +110,50 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   };
   auto imu = std::make_shared<ImuLogReader>(need(d.imu));
   auto odom = std::make_shared<OdomLogReader>(need(d.odom));
-  auto rover = std::make_shared<RinexObsReader>(need(d.rover_obs));
-  auto base = std::make_shared<RinexObsReader>(need(d.base_obs));
+  std::shared_ptr<RinexObsReader> rover, base;
+  if (raw) {
+    rover = std::make_shared<RinexObsReader>(need(d.rover_obs));
+    base = std::make_shared<RinexObsReader>(need(d.base_obs));
+  }
+  std::vector<PositionFix> positions;  // a solution file is small: read whole
+  if (!job.positions.empty()) {
+    positions = readPosFile(job.positions);
+    if (positions.empty()) throw DataError(job.positions, 0, "no position solutions");
+  }
   std::vector<NavData> navs;
   for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
-  std::unique_ptr<Calibrator> cal = makeCalibrator(
-      job.estimator, d, basePosition(d, base->header()), job.options, job.fgo_options, sink);
-  cal->addNavigation(mergeNav(navs));
+  // The local frame's origin: the base, else the first solution.
+  const Eigen::Vector3d origin_e = raw ? basePosition(d, base->header()) : positions.front().p_e;
+  std::unique_ptr<Calibrator> cal =
+      makeCalibrator(job.estimator, d, origin_e, job.options, job.fgo_options, sink);
+  if (!navs.empty()) cal->addNavigation(mergeNav(navs));
   Calibrator& c = *cal;
   std::vector<Stream> streams;
   streams.push_back(
       readerStream<ImuLogReader, ImuSample>(imu, [&c](const ImuSample& s) { c.addImu(s); }));
   streams.push_back(readerStream<OdomLogReader, OdomSample>(
       odom, [&c](const OdomSample& s) { c.addOdometer(s); }));
-  streams.push_back(
-      readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
-  streams.push_back(
-      readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
-  std::vector<PositionFix> positions;  // a solution file is small: read whole
-  if (!job.positions.empty()) {
-    positions = readPosFile(job.positions);
-    if (positions.empty()) throw DataError(job.positions, 0, "no position solutions");
+  if (raw) {
+    streams.push_back(
+        readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
+    streams.push_back(
+        readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
+  }
+  if (!positions.empty()) {
     streams.push_back(
         vectorStream<PositionFix>(positions, [&c](const PositionFix& p) { c.addPosition(p); }));
   }
   merge(streams, job.stop);
   if (streams[0].count < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (streams[1].count == 0) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
-  if (streams[2].count == 0) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
-  if (streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
+  if (raw && streams[2].count == 0) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
+  if (raw && streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
   try {
     c.finish();
   } catch (const std::runtime_error& e) {
     // A failed initialization says which condition of the data it met, when one is found.
-    const std::vector<std::string> why = diagnoseFolder(d, job.options.max_base_offset);
+    const std::vector<std::string> why =
+        raw ? diagnoseFolder(d, job.options.max_base_offset) : std::vector<std::string>{};
     if (why.empty()) throw;
     std::string text = std::string(e.what()) + "; the dataset:";
     for (const std::string& w : why) text += " " + w + ";";
@@ -151,12 +163,17 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   CalibrationRun run = c.run();
   // Recoverable damage the readers dropped leads the run's warnings.
   std::vector<std::string> damage = imu->warnings();
-  for (const auto& more : {odom->warnings(), rover->warnings(), base->warnings()}) {
-    damage.insert(damage.end(), more.begin(), more.end());
+  std::vector<std::vector<std::string>> more{odom->warnings()};
+  if (raw) {
+    more.push_back(rover->warnings());
+    more.push_back(base->warnings());
   }
+  for (const auto& m : more) damage.insert(damage.end(), m.begin(), m.end());
   run.warnings.insert(run.warnings.begin(), damage.begin(), damage.end());
   if (run.data_duration_s <= 0.0) {
-    throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
+    throw DataError(d.pathOf(d.imu), 0,
+                    raw ? "the IMU log and the rover observations do not overlap"
+                        : "the IMU log and the position solutions do not overlap");
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.load_time_s = std::max(0.0, total - run.wall_time_s);

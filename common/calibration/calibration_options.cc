@@ -50,6 +50,8 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.max_imu_gap_s = y.numberOr(s + "max_imu_gap_s", o.max_imu_gap_s, 1e-3, 1e3);
   o.max_imu_bridge_s = y.numberOr(s + "max_imu_bridge_s", o.max_imu_bridge_s, 1e-3, 1e3);
   o.divergence_sigma = y.numberOr(s + "divergence_sigma", o.divergence_sigma, 5.0, 1e6);
+  o.lc.sigma_scale = y.numberOr(s + "lc.sigma_scale", o.lc.sigma_scale, 1e-3, 1e3);
+  o.lc.use_height = flag("lc.use_height", o.lc.use_height);
   const std::string i = s + "init.";
   o.init.static_speed = y.numberOr(i + "static_speed", o.init.static_speed, 0.0, 1.0);
   o.init.min_static_s = y.numberOr(i + "min_static_s", o.init.min_static_s, 0.1, 1e3);

@@ -9,6 +9,7 @@
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
 #include "common/io/model_options.h"
+#include "common/models/position_model.h"
 #include "common/online/convergence.h"
 
 namespace giocal {
@@ -65,8 +66,10 @@ struct CalibrationOptions {
   bool hold_calibration = false;
   // The paper's LC scheme: GNSS enters as the antenna position solutions pushed with the rover
   // epochs (Calibrator::addPosition, calibrate --gnss lc --pos), not as double differences; the
-  // initial heading still comes from the raw observations. Not a YAML key.
+  // initial heading comes from the solutions too. Without raw GNSS the solutions are the epochs.
+  // Not a YAML key.
   bool loosely_coupled = false;
+  PositionWeighting lc;              // calibration.lc.sigma_scale, calibration.lc.use_height
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale

@@ -134,12 +134,21 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   int good_epochs = 0;
   for (const ObsEpoch& e : in.rover.epochs) {
     if (e.t < t_anchor_min) continue;
-    const ObsEpoch* base_epoch = base.nearest(e.t);
-    if (solved == rc.solutions.size()) rc.solutions.push_back(rc.filter->process(e, base_epoch));
-    const RtkSolution sol = rc.solutions[solved++];
-    if (sol.quality != 1 && sol.quality != 2) continue;
-    const Eigen::Matrix3d cov_n = base_frame.R_e_n().transpose() * sol.cov_e * base_frame.R_e_n();
-    const AntennaFix fix{e.t, sol.p_e, std::sqrt(0.5 * (cov_n(0, 0) + cov_n(1, 1)))};
+    AntennaFix fix;
+    if (options.loosely_coupled) {
+      // The LC scheme starts from the solutions it is given, as it calibrates from them.
+      const PositionFix* p = fixAt(in.positions, e.t, kPositionTolerance);
+      if (!p) continue;
+      fix = {e.t, p->p_e,
+             options.lc.sigma_scale * std::sqrt(0.5 * (p->cov_enu(0, 0) + p->cov_enu(1, 1)))};
+    } else {
+      const ObsEpoch* base_epoch = base.nearest(e.t);
+      if (solved == rc.solutions.size()) rc.solutions.push_back(rc.filter->process(e, base_epoch));
+      const RtkSolution sol = rc.solutions[solved++];
+      if (sol.quality != 1 && sol.quality != 2) continue;
+      const Eigen::Matrix3d cov_n = base_frame.R_e_n().transpose() * sol.cov_e * base_frame.R_e_n();
+      fix = {e.t, sol.p_e, std::sqrt(0.5 * (cov_n(0, 0) + cov_n(1, 1)))};
+    }
     ++good_epochs;
     // The anchor is the last good epoch inside the static window (or the first one in motion).
     const bool in_static = have_static && e.t <= ts1;
@@ -266,7 +275,11 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     s.P_nav_calib.block<3, 8>(3, 0) = -ez_b * (ez_m * Pc.block<3, 8>(calib_index::kTheta, 0));
     return s;
   }
-  if (good_epochs == 0) return fail("no RTK solution of the antenna (check base position and nav)");
+  if (good_epochs == 0) {
+    return fail(options.loosely_coupled
+                    ? "no position solution at a GNSS epoch"
+                    : "no RTK solution of the antenna (check base position and nav)");
+  }
   return fail("the robot never drove " + fixedText(io.min_distance, 1) +
               " m in a straight enough line with a good enough GNSS solution");
 }

@@ -61,8 +61,8 @@ void requireRawGnss(const DatasetDescription& d) {
   if (d.rover_obs.empty()) {
     throw DataError(d.pathOf("dataset.yaml"), 0,
                     "no raw GNSS (files.rover_obs is empty): calibrate needs rover and base "
-                    "observations; calibrating from positions alone (an imported bag's gnss.pos) "
-                    "is not implemented yet");
+                    "observations, or a position solution (the LC scheme: --gnss lc --pos "
+                    "gnss.pos)");
   }
   if (d.base_obs.empty()) {
     throw DataError(d.pathOf("dataset.yaml"), 0,

@@ -23,11 +23,18 @@ void PositionModel::evaluate(const double* const* params, Eigen::VectorXd& resid
   if (jacobians) *jacobians = {Mat3::Identity(), -R_n_b * skew(p_b_g), R_n_b};
 }
 
-PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix) {
+PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix,
+                              const PositionWeighting& weighting) {
   const Geodetic g = geodeticFromEcef(fix.p_e);
   // ENU at the fix to n (the ENU frame at the origin): R_n_e R_e_enu.
   const Mat3 R = frame.R_e_n().transpose() * rotationEcefFromEnu(g.lat, g.lon);
-  return PositionModel(frame.enuFromEcef(fix.p_e), R * fix.cov_enu * R.transpose());
+  Mat3 cov_enu = fix.cov_enu * weighting.sigma_scale * weighting.sigma_scale;
+  if (!weighting.use_height) {
+    cov_enu.row(2).setZero();
+    cov_enu.col(2).setZero();
+    cov_enu(2, 2) = 1e6;
+  }
+  return PositionModel(frame.enuFromEcef(fix.p_e), R * cov_enu * R.transpose());
 }
 
 }  // namespace giocal

@@ -26,7 +26,16 @@ class PositionModel : public MeasurementModel {
   Eigen::Matrix3d cov_;
 };
 
+/// How far a position solution's own covariance is believed (the LC scheme's YAML keys
+/// calibration.lc.*). Consumer receivers report sigmas their errors, slow and metres large, exceed.
+struct PositionWeighting {
+  double sigma_scale = 1.0;  // the solution's sigmas are multiplied by this
+  bool use_height = true;    // false: the height is left out (its variance made 1e6 m^2), as
+                             // robot_localization's zero_altitude does for 2D robots
+};
+
 /// The model of a position solution (ECEF, ENU covariance at the fix) in the local frame n.
-PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix);
+PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix,
+                              const PositionWeighting& weighting = {});
 
 }  // namespace giocal

@@ -157,6 +157,12 @@ void Calibrator::release(Datum& d) {
       }
       frontier_ = d.position.t;
       buf_.positions.push_back(d.position);
+      // Without raw GNSS the solutions are the GNSS epochs (an epoch without observations).
+      if (positionsOnly()) {
+        ObsEpoch epoch;
+        epoch.t = d.position.t;
+        acceptRover(std::move(epoch));
+      }
       break;
     case Kind::kBase:
       if (!buf_.base.epochs.empty() && d.obs.t <= buf_.base.epochs.back().t) {
@@ -173,14 +179,18 @@ void Calibrator::release(Datum& d) {
                 "rover epoch repeating the previous one's time");
         return;
       }
-      last_rover_t_ = d.obs.t;
-      if (std::isnan(t_rover_first_)) t_rover_first_ = d.obs.t;
-      t_rover_last_ = d.obs.t;
       frontier_ = d.obs.t;
-      rover_.push_back(std::move(d.obs));
+      acceptRover(std::move(d.obs));
       break;
   }
   ++released_;
+}
+
+void Calibrator::acceptRover(ObsEpoch e) {
+  last_rover_t_ = e.t;
+  if (std::isnan(t_rover_first_)) t_rover_first_ = e.t;
+  t_rover_last_ = e.t;
+  rover_.push_back(std::move(e));
 }
 
 std::optional<NavState> Calibrator::navState() const {

@@ -83,6 +83,9 @@ class Calibrator {
   };
   void push(double t, Datum d);
   void release(Datum& d);
+  void acceptRover(ObsEpoch e);
+  /// The LC scheme on a dataset without raw GNSS: the position solutions stand for the epochs.
+  bool positionsOnly() const { return options_.loosely_coupled && dataset_.rover_obs.empty(); }
   void process();
   bool tryInitialize();
   bool ready(double t) const;

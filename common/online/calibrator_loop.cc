@@ -153,7 +153,8 @@ void Calibrator::process() {
 
 void Calibrator::dispatchRover(const ObsEpoch& rover) {
   if (rover.t <= skip_rover_until_ || !core_->acceptsEpoch(rover.t)) return;
-  const ObsEpoch* base = nearestBase(rover.t);
+  static const ObsEpoch kNoBase;  // the LC scheme reads no base epoch
+  const ObsEpoch* base = positionsOnly() ? &kNoBase : nearestBase(rover.t);
   if (!base) {
     run_.count(Counter::kGnssWithoutBase);
     return;

@@ -41,10 +41,30 @@ TEST(LooselyCoupled, BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm) 
     EXPECT_LT(e.p_b_m.head<2>().norm(), 4.0 * sd.segment<2>(2).norm()) << e.p_b_m.transpose();
     EXPECT_LT(e.nees7, 30.0);
   }
-  // Without any position solution, LC has no GNSS: the epochs go unused.
+  // Without raw GNSS (an imported bag's gnss.pos): the solutions are the epochs, and the
+  // initial heading comes from them.
+  CalibrationInputs only = in;
+  only.description.rover_obs.clear();
+  only.description.base_obs.clear();
+  only.rover.epochs.clear();
+  only.base.epochs.clear();
+  for (const char* estimator : {"ekf", "fgo"}) {
+    SCOPED_TRACE(estimator);
+    const CalibrationRun run = replayInputs(only, {estimator, lc, {}}, nullptr);
+    EXPECT_GT(run.gnss_epochs, 0.8 * static_cast<double>(in.positions.size()));
+    const CalibrationError e = calibrationError(run.final(), in.truth->calib);
+    const Eigen::Matrix<double, 8, 1> sd = run.final().sigma();
+    EXPECT_LT(std::abs(e.s_v), 4.0 * sd[0]) << e.s_v;
+    EXPECT_LT(e.nees7, 30.0);
+  }
+  // Without any position solution LC has no GNSS to start from: a clear error, not a silent run.
   in.positions.clear();
-  const CalibrationRun none = replayInputs(in, {"ekf", lc, {}}, nullptr);
-  EXPECT_EQ(none.gnss_epochs, 0);
+  try {
+    replayInputs(in, {"ekf", lc, {}}, nullptr);
+    ADD_FAILURE() << "expected no initial state";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no position solution"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
