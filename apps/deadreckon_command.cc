@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "apps/progress_line.h"
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/pos_reader.h"
 #include "common/io/output_set.h"
 #include "common/math/rotation.h"
 #include "replay/calibration_source.h"
@@ -28,6 +30,21 @@ nlohmann::ordered_json calibrationJson(const CalibrationPrior& c) {
           {"rpy_b_m_deg", {rpy.x(), rpy.y(), rpy.z()}}};
 }
 
+/// Position solutions as reference rows (no velocity or attitude).
+std::vector<TruthSample> positionRows(const std::vector<PositionFix>& fixes) {
+  std::vector<TruthSample> rows;
+  for (const PositionFix& f : fixes) {
+    const Geodetic g = geodeticFromEcef(f.p_e);
+    TruthSample s;
+    s.t = f.t;
+    s.lat_deg = g.lat * kRadToDeg;
+    s.lon_deg = g.lon * kRadToDeg;
+    s.h = g.h;
+    rows.push_back(s);
+  }
+  return rows;
+}
+
 }  // namespace
 
 void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
@@ -42,7 +59,8 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   dr.options = readGiocalConfig(job.config).calibration;
   dr.start_s = job.start_s;
   dr.duration_s = job.duration_s;
-  const CalibrationInputs in = loadCalibrationInputs(job.data);
+  dr.options.loosely_coupled = !job.positions.empty();
+  const CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
   checkStop(job.stop);
   const CalibrationSource source = readCalibrationSource(job.calibration, in);
   dr.calibration = source.calibration;
@@ -55,7 +73,11 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
     }
     reference_path = in.description.pathOf(in.description.truth);
   }
-  const ReferenceTrajectory reference(readTruthCsv(reference_path));
+  // A .pos reference (GNSS positions) has no attitude: the aided state at the start is kept.
+  const bool pos_reference = std::filesystem::path(reference_path).extension() == ".pos";
+  dr.reference_has_attitude = !pos_reference;
+  const ReferenceTrajectory reference(pos_reference ? positionRows(readPosFile(reference_path))
+                                                    : readTruthCsv(reference_path));
   ProgressLine progress("deadreckon", in.imu.front().t,
                         in.rover.epochs.front().t + job.start_s + job.duration_s, job.quiet);
   dr.progress = [&](double t) {
@@ -80,6 +102,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   j["calibration_source"] = source.label;
   j["calibration"] = calibrationJson(source.calibration);
   j["reference"] = reference_path;
+  j["gnss_before_start"] = job.positions.empty() ? "tc" : "lc: " + job.positions;
   j["start_s"] = job.start_s;
   j["t_start"] = r.t_start;
   j["duration_s"] = r.t_end - r.t_start;

@@ -1,5 +1,6 @@
 // `giocal deadreckon --data <dir> --calibration <source> [--start <s>] [--duration <s>]
-// [--reference <trajectory.csv>] [--config <yaml>] --out <dir> [--overwrite]`.
+// [--reference <trajectory.csv|file.pos>] [--gnss lc --pos <file.pos>] [--config <yaml>]
+// --out <dir> [--overwrite]`.
 #pragma once
 
 #include <iosfwd>
@@ -11,6 +12,7 @@ namespace giocal {
 
 struct DeadReckonJob {
   std::string data, calibration, reference, config, out;  // reference empty: the dataset's truth
+  std::string positions;  // --gnss lc --pos: GNSS aiding before the start from these solutions
   double start_s = 100.0, duration_s = 1000.0;
   bool overwrite = false;
   bool quiet = false;  // no progress line

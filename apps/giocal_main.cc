@@ -38,7 +38,7 @@ const char* kUsage =
     "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite] [--quiet]\n"
     "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
     "guess>\n"
-    "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv>] "
+    "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv|file.pos>] "
     "[--config <yaml>]\n"
     "                   --out <dir> [--overwrite] [--quiet]\n"
     "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite]\n"
@@ -121,24 +121,33 @@ int runRtkCommand(int argc, char** argv) {
   return 0;
 }
 
-int runCalibrateCommand(int argc, char** argv) {
-  po::options_description opts("giocal calibrate");
-  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
-      "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
-      "gnss", po::value<std::string>()->default_value("tc"),
-      "tc: double differences (tightly coupled); lc: position solutions (--pos)")(
+void addGnssOptions(po::options_description& opts) {
+  opts.add_options()("gnss", po::value<std::string>()->default_value("tc"),
+                     "tc: double differences (tightly coupled); lc: position solutions (--pos)")(
       "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
-  addRunOutputOptions(opts, true);
-  const po::variables_map vm = parsed(argc, argv, opts);
-  giocal::CalibrateJob job;
-  job.data = vm["data"].as<std::string>();
-  job.estimator = vm["estimator"].as<std::string>();
+}
+
+/// The LC scheme's .pos file, empty for the TC scheme.
+std::string lcPositions(const po::variables_map& vm) {
   const std::string gnss = vm["gnss"].as<std::string>();
   if (gnss != "tc" && gnss != "lc") throw po::error("--gnss must be tc or lc, not '" + gnss + "'");
   if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
     throw po::error("--gnss lc needs --pos <file.pos>, and --pos only goes with --gnss lc");
   }
-  job.positions = vm["pos"].as<std::string>();
+  return vm["pos"].as<std::string>();
+}
+
+int runCalibrateCommand(int argc, char** argv) {
+  po::options_description opts("giocal calibrate");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
+      "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo");
+  addGnssOptions(opts);
+  addRunOutputOptions(opts, true);
+  const po::variables_map vm = parsed(argc, argv, opts);
+  giocal::CalibrateJob job;
+  job.data = vm["data"].as<std::string>();
+  job.estimator = vm["estimator"].as<std::string>();
+  job.positions = lcPositions(vm);
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;
@@ -240,7 +249,8 @@ int runDeadReckonCommand(int argc, char** argv) {
       "outage start, s after the first rover epoch")(
       "duration", po::value<double>()->default_value(1000.0), "outage length [s]")(
       "reference", po::value<std::string>()->default_value(""),
-      "reference trajectory (default: the dataset's truth.csv)");
+      "reference trajectory.csv, or a .pos file (default: the dataset's truth.csv)");
+  addGnssOptions(opts);
   addRunOutputOptions(opts, true);
   const po::variables_map vm = parsed(argc, argv, opts);
   giocal::DeadReckonJob job;
@@ -249,6 +259,7 @@ int runDeadReckonCommand(int argc, char** argv) {
   job.start_s = vm["start"].as<double>();
   job.duration_s = vm["duration"].as<double>();
   job.reference = vm["reference"].as<std::string>();
+  job.positions = lcPositions(vm);
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;

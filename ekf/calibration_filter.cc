@@ -14,6 +14,7 @@
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
+#include "common/models/position_model.h"
 #include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
 #include "ekf/imu_propagation.h"
@@ -356,6 +357,14 @@ TruthSample CalibrationFilter::trajectorySample(double t) {
     t = t_;
   }
   return truthRow(frame_, x, t);
+}
+
+bool CalibrationFilter::updatePosition(const PositionFix& fix) {
+  propagateTo(fix.t);
+  const PositionModel model = positionModelOf(frame(), fix, options_.lc);
+  return update(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg},
+                chi2Quantile(options_.chi2_probability, 3))
+      .accepted;
 }
 
 }  // namespace giocal

@@ -11,6 +11,7 @@
 #include "common/calibration/calibration_run.h"
 #include "common/calibration/initial_state.h"
 #include "common/geodesy/wgs84.h"
+#include "common/gnss/pos_reader.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/imu/imu_sample.h"
 #include "common/motion/motion_detector.h"
@@ -68,6 +69,10 @@ class CalibrationFilter {
   /// iterations > 1: iterated EKF, relinearized at each new estimate.
   UpdateResult update(const MeasurementModel& model, const std::vector<std::string>& names,
                       double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
+
+  /// The LC scheme's update: propagates to the solution's time and applies it through the antenna
+  /// lever arm (weighted by options.lc), gated at options.chi2_probability; false if gated out.
+  bool updatePosition(const PositionFix& fix);
 
   /// Raw gyro at t, linearly interpolated, and the per-axis variance of its white noise.
   struct Gyro {

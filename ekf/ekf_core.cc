@@ -4,7 +4,6 @@
 
 #include "common/gnss/spp.h"
 #include "common/io/text.h"
-#include "common/models/position_model.h"
 #include "ekf/imu_propagation.h"
 
 namespace giocal {
@@ -47,12 +46,7 @@ EpochOutcome EkfCore::position(double t, CalibrationRun& run) {
   EpochOutcome out;
   const PositionFix* fix = fixAt(sensors_.positions, t, kPositionTolerance);
   if (!fix) return out;
-  filter_.propagateTo(t);
-  const PositionModel model = positionModelOf(filter_.frame(), *fix, options_.lc);
-  out.used = filter_
-                 .update(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg},
-                         chi2Quantile(options_.chi2_probability, 3))
-                 .accepted;
+  out.used = filter_.updatePosition(*fix);
   run.count(Counter::kGnssRowsRejected, out.used ? 0 : 3);
   out.diverged = !finiteState(filter_.state());
   if (out.diverged) return out;

@@ -77,16 +77,24 @@ DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory&
       ++k;
     } else {
       const ObsEpoch& rover = in.rover.epochs[j++];
+      if (rover.t < filter.time()) continue;
+      if (options.loosely_coupled) {  // the LC scheme: the position solution of the epoch
+        const PositionFix* fix = fixAt(in.positions, rover.t, kPositionTolerance);
+        if (fix) filter.updatePosition(*fix);
+        continue;
+      }
       const ObsEpoch* b = base.nearest(rover.t);
-      if (b && rover.t >= filter.time() && gnss.process(filter, rover, *b).diverged) {
+      if (b && gnss.process(filter, rover, *b).diverged) {
         throw std::runtime_error("dead reckoning: the GNSS-aided filter diverged at t=" +
                                  timeText(rover.t) + " before the start");
       }
     }
   }
   filter.propagateTo(out.t_start);
-  const NavState x0 = navStateFromRow(filter.frame(), *ref_start);
-  filter.movePose(x0.p_n_b, x0.v_n_b, x0.q_n_b);
+  if (job.reference_has_attitude) {
+    const NavState x0 = navStateFromRow(filter.frame(), *ref_start);
+    filter.movePose(x0.p_n_b, x0.v_n_b, x0.q_n_b);
+  }
 
   // IMU and odometer alone.
   const double step = 1.0 / options.output_rate_hz;

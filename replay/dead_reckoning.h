@@ -18,7 +18,10 @@ struct DeadReckoningJob {
   double start_s = 100.0;        // outage start, seconds after the first rover epoch
   double duration_s = 1000.0;    // outage length (cut at the end of the data or the reference)
   CalibrationPrior calibration;  // the calibration used, held; its covariance enters as consider
-  CalibrationOptions options;
+  CalibrationOptions options;    // options.loosely_coupled: aided by in.positions before the start
+  // false (a reference of GNSS positions): the GNSS-aided state at the start is kept, not moved
+  // onto the reference.
+  bool reference_has_attitude = true;
   std::function<void(double)> progress;  // called with the data time reached (may throw to stop)
 };
 
@@ -40,7 +43,8 @@ struct DeadReckoning {
 };
 
 /// Runs the filter GNSS-aided (calibration held) from the first possible initial state to the
-/// start, moves its pose and velocity to the reference's there (IMU biases stay as estimated),
+/// start, moves its pose and velocity to the reference's there (IMU biases stay as estimated;
+/// not with a reference without attitude),
 /// then navigates on IMU and odometer alone. Throws std::runtime_error when the start cannot be
 /// reached (no initial state before it, no reference there).
 DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory& reference,

@@ -16,7 +16,7 @@ double CalibrationInputs::dataDuration() const {
   return std::max(0.0, t1 - t0);
 }
 
-CalibrationInputs loadCalibrationInputs(const std::string& folder) {
+CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::string& positions) {
   CalibrationInputs in;
   in.description = readDatasetDescription(folder);
   const DatasetDescription& d = in.description;
@@ -29,6 +29,25 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder) {
   in.odom = readOdomCsv(need(d.odom), &in.warnings);
   if (in.imu.size() < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (in.odom.empty()) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
+  const std::string truth = folder + "/truth_calib.yaml";
+  if (std::filesystem::exists(truth)) in.truth = readTruthCalibration(truth);
+  if (!positions.empty()) {
+    in.positions = readPosFile(positions);
+    if (in.positions.empty()) throw DataError(positions, 0, "no position solutions");
+  }
+  if (d.rover_obs.empty() && !in.positions.empty()) {
+    for (const PositionFix& p : in.positions) {
+      ObsEpoch e;
+      e.t = p.t;
+      in.rover.epochs.push_back(e);
+    }
+    for (const std::string& n : d.nav) in.nav = mergeNav({in.nav, readRinexNav(need(n))});
+    in.base_e = in.positions.front().p_e;
+    if (in.dataDuration() <= 0.0) {
+      throw DataError(d.pathOf(d.imu), 0, "the IMU log and the position solutions do not overlap");
+    }
+    return in;
+  }
   requireRawGnss(d);
   in.rover = readRinexObs(need(d.rover_obs));
   in.base = readRinexObs(need(d.base_obs));
@@ -49,8 +68,6 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder) {
   if (in.dataDuration() <= 0.0) {
     throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
   }
-  const std::string truth = folder + "/truth_calib.yaml";
-  if (std::filesystem::exists(truth)) in.truth = readTruthCalibration(truth);
   return in;
 }
 

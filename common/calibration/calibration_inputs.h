@@ -33,7 +33,10 @@ struct CalibrationInputs {
 };
 
 /// Throws DataError naming the file, the line and the problem (missing file, bad rows, too few
-/// samples, no base position, logs that do not overlap in time).
-CalibrationInputs loadCalibrationInputs(const std::string& folder);
+/// samples, no base position, logs that do not overlap in time). `positions`: a .pos solution
+/// file read into `positions` (the LC scheme); a dataset without raw GNSS then gets epochs
+/// without observations at the solutions' times, and the first solution as its origin.
+CalibrationInputs loadCalibrationInputs(const std::string& folder,
+                                        const std::string& positions = "");
 
 }  // namespace giocal

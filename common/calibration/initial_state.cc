@@ -280,8 +280,12 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
                     ? "no position solution at a GNSS epoch"
                     : "no RTK solution of the antenna (check base position and nav)");
   }
-  return fail("the robot never drove " + fixedText(io.min_distance, 1) +
-              " m in a straight enough line with a good enough GNSS solution");
+  return fail("the robot never drove far enough in a straight enough line (at least " +
+              fixedText(io.min_distance, 1) + " m, turning less than " +
+              fixedText(io.max_turn_deg, 0) +
+              " deg) for the GNSS displacement to give the heading within " +
+              fixedText(io.max_heading_sigma_deg, 1) +
+              " deg (calibration.init.min_distance, max_turn_deg, max_heading_sigma_deg)");
 }
 
 }  // namespace giocal

@@ -1,0 +1,81 @@
+// The real Husky bag end to end without raw GNSS: import, the LC scheme from its NavSatFix
+// positions with both estimators, and dead reckoning through its last 200 s against the fixes.
+// No truth exists: the checks are what any sound calibration of this robot must show.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+int run(const std::string& args, std::string* out) {
+  const std::string cmd = std::string(GIOCAL_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  char buf[512];
+  while (p && std::fgets(buf, sizeof(buf), p)) *out += buf;
+  return p ? pclose(p) : -1;
+}
+
+nlohmann::json summary(const std::string& dir) {
+  std::ifstream in(dir + "/summary.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(RealHusky, LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes) {
+  test::TempDir dir;
+  const std::string data = dir.file("husky"), pos = data + "/gnss.pos";
+  std::string log;
+  ASSERT_EQ(run("import --bag " + std::string(GIOCAL_SOURCE_DIR) +
+                    "/data/real/husky-robot-localization/test1.bag --out " + data,
+                &log),
+            0)
+      << log;
+  // Raw GNSS is what calibrate reads by default; the message says what to do instead.
+  log.clear();
+  EXPECT_NE(run("calibrate --data " + data + " --out " + dir.file("tc"), &log), 0);
+  EXPECT_NE(log.find("--gnss lc --pos"), std::string::npos) << log;
+  // A consumer receiver's height wanders by tens of metres on this flat drive: left out.
+  const std::string config = dir.file("lc.yaml");
+  std::ofstream(config) << "calibration:\n  lc:\n    use_height: 0\n";
+  double s_v[2] = {0, 0};
+  int k = 0;
+  for (const std::string est : {"ekf", "fgo"}) {
+    SCOPED_TRACE(est);
+    const std::string out = dir.file(est);
+    log.clear();
+    ASSERT_EQ(run("calibrate --data " + data + " --gnss lc --pos " + pos + " --estimator " + est +
+                      " --config " + config + " --quiet --out " + out,
+                  &log),
+              0)
+        << log;
+    const nlohmann::json s = summary(out);
+    // 989 fixes, the first 35 s before the heading is found.
+    EXPECT_GT(s["gnss_epochs"].get<int>(), 800) << log;
+    s_v[k++] = s["final"]["s_v"].get<double>();
+    EXPECT_LT(std::abs(s["final"]["s_v"].get<double>()), 0.1);
+    // The IMU is mounted about 90 degrees off (gravity along its y).
+    EXPECT_NEAR(s["final"]["rpy_b_m_deg"][0].get<double>(), -90.0, 3.0);
+    EXPECT_LT(s["sd"]["s_v"].get<double>(), 0.01);
+    log.clear();
+    ASSERT_EQ(run("deadreckon --data " + data + " --gnss lc --pos " + pos + " --reference " + pos +
+                      " --calibration " + out + "/summary.json --start 195 --duration 200" +
+                      " --config " + config + " --quiet --out " + dir.file(est + "_dr"),
+                  &log),
+              0)
+        << log;
+    const nlohmann::json dr = summary(dir.file(est + "_dr"));
+    EXPECT_GT(dr["distance_m"].get<double>(), 150.0);
+    EXPECT_LT(dr["horizontal_max_m"].get<double>(), 50.0) << log;
+  }
+  // The two estimators see the same drive.
+  EXPECT_NEAR(s_v[0], s_v[1], 0.03);
+}
+
+}  // namespace
+}  // namespace giocal
