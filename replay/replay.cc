@@ -39,15 +39,22 @@ void merge(std::vector<Stream>& streams, const StopRequest* stop) {
   }
 }
 
-/// A stream over a reader with bool next(T&).
+/// A stream over a reader with bool next(T&), its times moved by `offset` (dataset.yaml's
+/// time_offsets) before they are ordered.
 template <class Reader, class T>
-Stream readerStream(std::shared_ptr<Reader> reader, std::function<void(const T&)> push) {
+Stream readerStream(std::shared_ptr<Reader> reader, std::function<void(const T&)> push,
+                    double offset = 0.0) {
   auto held = std::make_shared<T>();
+  const auto next = [reader, held, offset]() -> double {
+    if (!reader->next(*held)) return INFINITY;
+    held->t += offset;
+    return held->t;
+  };
   Stream s;
-  s.t = reader->next(*held) ? held->t : INFINITY;
-  s.step = [reader, held, push]() {
+  s.t = next();
+  s.step = [held, push, next]() {
     push(*held);
-    return reader->next(*held) ? held->t : INFINITY;
+    return next();
   };
   return s;
 }
@@ -119,6 +126,7 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   if (!job.positions.empty()) {
     positions = readPosFile(job.positions);
     if (positions.empty()) throw DataError(job.positions, 0, "no position solutions");
+    for (PositionFix& p : positions) p.t += d.time_offsets.positions;
   }
   std::vector<NavData> navs;
   for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
@@ -129,10 +137,10 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   if (!navs.empty()) cal->addNavigation(mergeNav(navs));
   Calibrator& c = *cal;
   std::vector<Stream> streams;
-  streams.push_back(
-      readerStream<ImuLogReader, ImuSample>(imu, [&c](const ImuSample& s) { c.addImu(s); }));
+  streams.push_back(readerStream<ImuLogReader, ImuSample>(
+      imu, [&c](const ImuSample& s) { c.addImu(s); }, d.time_offsets.imu));
   streams.push_back(readerStream<OdomLogReader, OdomSample>(
-      odom, [&c](const OdomSample& s) { c.addOdometer(s); }));
+      odom, [&c](const OdomSample& s) { c.addOdometer(s); }, d.time_offsets.odometer));
   if (raw) {
     streams.push_back(
         readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));

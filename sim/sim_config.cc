@@ -81,6 +81,7 @@ SimConfig readSimConfig(const std::string& path) {
   o.scale_drift_per_sqrt_s =
       y.numberOr("odometer.scale_drift_per_sqrt_s", o.scale_drift_per_sqrt_s, 0.0, 1.0);
   o.speed_quantum = y.numberOr("odometer.speed_quantum", o.speed_quantum, 0.0, 1.0);
+  o.delay_s = y.numberOr("odometer.delay_s", o.delay_s, 0.0, 1.0);
   o.yaw_rate_quantum_deg_s =
       y.numberOr("odometer.yaw_rate_quantum_deg_s", o.yaw_rate_quantum_deg_s, 0.0, 10.0);
 

@@ -35,6 +35,7 @@ struct OdometerErrorSpec {
   double slip_rate_per_min = 0.0;  // wheel-slip events per minute of driving
   double slip_duration_s = 0.5;    // length of one event [s]
   double slip_speed_factor = 1.3;  // measured / true speed while slipping (wheels spin)
+  double delay_s = 0.0;  // stamps late by this (a wheel driver's latency; dataset.yaml not told)
 };
 
 struct SimConfig {

@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs_writer.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
-#include "common/gnss/rinex_obs_writer.h"
 #include "sim/sensor_errors.h"
 #include "sim/trajectory.h"
 
@@ -106,6 +106,7 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
     out.true_speed.push_back(m.speed);
     out.true_yaw_rate.push_back(m.w_m.z());
     out.odom.push_back(odo_errors.measure(t0 + tau, m.speed, m.w_m.z(), dt_odo, rng_odo));
+    out.odom.back().t += config.odometer.delay_s;
   }
 
   if (config.gnss.enabled) {

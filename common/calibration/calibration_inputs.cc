@@ -27,6 +27,8 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::st
   };
   in.imu = readImuCsv(need(d.imu), &in.warnings);
   in.odom = readOdomCsv(need(d.odom), &in.warnings);
+  for (ImuSample& s : in.imu) s.t += d.time_offsets.imu;
+  for (OdomSample& s : in.odom) s.t += d.time_offsets.odometer;
   if (in.imu.size() < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (in.odom.empty()) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
   const std::string truth = folder + "/truth_calib.yaml";
@@ -34,6 +36,7 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::st
   if (!positions.empty()) {
     in.positions = readPosFile(positions);
     if (in.positions.empty()) throw DataError(positions, 0, "no position solutions");
+    for (PositionFix& p : in.positions) p.t += d.time_offsets.positions;
   }
   if (d.rover_obs.empty() && !in.positions.empty()) {
     for (const PositionFix& p : in.positions) {

@@ -103,6 +103,11 @@ DatasetDescription readDatasetDescription(const std::string& folder) {
     d.base_position_ecef = p;
   }
 
+  constexpr double kMaxOffset = 10.0;  // [s]; more is a wrong clock, not a latency
+  d.time_offsets.imu = y.numberOr("time_offsets.imu", 0.0, -kMaxOffset, kMaxOffset);
+  d.time_offsets.odometer = y.numberOr("time_offsets.odometer", 0.0, -kMaxOffset, kMaxOffset);
+  d.time_offsets.positions = y.numberOr("time_offsets.positions", 0.0, -kMaxOffset, kMaxOffset);
+
   CalibrationPrior& c = d.initial_calibration;
   c.mean.s_v = y.number("initial_calibration.s_v", -kMaxScale, kMaxScale);
   c.mean.s_w = y.number("initial_calibration.s_w", -kMaxScale, kMaxScale);
@@ -157,6 +162,13 @@ void writeDatasetDescription(const DatasetDescription& d) {
     out << Comment("m");
   }
   out << EndMap;
+
+  if (d.time_offsets.any()) {
+    out << Key << "time_offsets" << Value << BeginMap;
+    out << Key << "imu" << Value << d.time_offsets.imu << Key << "odometer" << Value
+        << d.time_offsets.odometer << Key << "positions" << Value << d.time_offsets.positions;
+    out << EndMap << Comment("s, added to each sensor's stamps");
+  }
 
   const CalibrationPrior& c = d.initial_calibration;
   out << Key << "initial_calibration" << Value << BeginMap;

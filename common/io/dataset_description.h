@@ -39,6 +39,15 @@ struct CalibrationPrior {
   std::optional<Eigen::Matrix<double, 8, 8>> covariance;
 };
 
+/// Fixed offsets added to a sensor's time stamps to put them on the GNSS time [s]: an odometer
+/// whose stamps are 50 ms late (a ROS wheel driver's latency) has odometer: -0.05.
+struct TimeOffsets {
+  double imu = 0.0;
+  double odometer = 0.0;
+  double positions = 0.0;  // the LC scheme's position solutions (an imported bag's gnss.pos)
+  bool any() const { return imu != 0.0 || odometer != 0.0 || positions != 0.0; }
+};
+
 struct DatasetDescription {
   std::string folder;  // absolute or relative folder the file names below are relative to
   std::string rover_obs = "rover.obs";  // empty: no raw GNSS (an imported bag of IMU and odometry)
@@ -52,6 +61,7 @@ struct DatasetDescription {
   Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();    // GNSS antenna in b [m]
   std::optional<Eigen::Vector3d> base_position_ecef;  // [m]; else the base RINEX header
   CalibrationPrior initial_calibration;
+  TimeOffsets time_offsets;  // optional section time_offsets
 
   std::string pathOf(const std::string& name) const { return folder + "/" + name; }
 };
