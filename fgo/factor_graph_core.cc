@@ -305,6 +305,7 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     fix = nullptr;
     w_.solve(fo_.max_iterations);
   }
+  if (rejectOdometer(cur)) w_.solve(fo_.max_iterations);
   EpochOutcome out;
   out.used = !o_.loosely_coupled || fix;
   out.fixed =
@@ -330,6 +331,26 @@ bool FactorGraphCore::rejectPosition(const FgoEpoch& e, const PositionFix& fix) 
   w_.removeFactors(tagged("position", e.k));
   run_->count(Counter::kGnssRowsRejected, 3);
   return true;
+}
+
+bool FactorGraphCore::rejectOdometer(const FgoEpoch& e) {
+  // As the EKF's gate of an odometer interval, on the solved window: an interval the solution
+  // cannot fit (wheel slip) leaves the window instead of pulling the scales.
+  const std::string tag = tagged("odometer", e.k);
+  const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
+  for (const Factor& f : window.factors()) {
+    if (f.tag != tag) continue;
+    std::vector<const double*> params;
+    for (const std::string& v : f.vars) params.push_back(window.value(v).data());
+    Eigen::VectorXd r;
+    f.model->evaluate(params.data(), r, nullptr);
+    const double nis = (*f.sqrt_info * r).squaredNorm();
+    if (nis <= chi2Quantile(o_.chi2_probability, static_cast<int>(r.size()))) return false;
+    run_->count(Counter::kOdometerRejected);
+    w_.removeFactors(tag);
+    return true;
+  }
+  return false;
 }
 
 void FactorGraphCore::trajectoryUpTo(double t, const std::function<void(const TruthSample&)>& out) {

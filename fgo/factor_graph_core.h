@@ -74,6 +74,7 @@ class FactorGraphCore : public EstimatorCore {
   /// The LC scheme's position factor of epoch e removed when its solved residual fails the
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
+  bool rejectOdometer(const FgoEpoch& e);
   std::string ambiguityVar(const SatId& sat, char band) const;
   void newAmbiguity(const SatId& sat, char band, double value, double lambda);
   std::vector<std::string> phaseVars(const DdGnssModel& model,

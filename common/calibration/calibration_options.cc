@@ -46,6 +46,7 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.max_odometer_rejections = static_cast<int>(
       y.numberOr(s + "max_odometer_rejections", o.max_odometer_rejections, 1, 1e6));
   o.max_odometer_gap_s = y.numberOr(s + "max_odometer_gap_s", o.max_odometer_gap_s, 1e-3, 60.0);
+  o.gnss_gap_warning_s = y.numberOr(s + "gnss_gap_warning_s", o.gnss_gap_warning_s, 0.1, 1e6);
   o.output_rate_hz = y.numberOr(s + "output_rate_hz", o.output_rate_hz, 0.01, 1e4);
   o.max_imu_gap_s = y.numberOr(s + "max_imu_gap_s", o.max_imu_gap_s, 1e-3, 1e3);
   o.max_imu_bridge_s = y.numberOr(s + "max_imu_bridge_s", o.max_imu_bridge_s, 1e-3, 1e3);

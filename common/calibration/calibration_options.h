@@ -80,6 +80,7 @@ struct CalibrationOptions {
   // increased by their prior covariance before the next one.
   int max_odometer_rejections = 5;
   double max_odometer_gap_s = 0.5;  // a longer gap restarts the odometer interval [s]
+  double gnss_gap_warning_s = 5.0;  // rover epochs further apart are named as an outage [s]
   double output_rate_hz = 10.0;     // trajectory.csv rate [Hz]
   double max_imu_gap_s = 0.5;       // longer IMU gaps are reported (and bridged) [s]
   // Longer IMU gaps end the stretch: the navigation state restarts from the data after the gap

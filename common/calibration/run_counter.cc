@@ -36,6 +36,10 @@ const char* counterName(Counter c) {
       return "non_finite_samples_dropped";
     case Counter::kDroppedWithoutImu:
       return "dropped_while_imu_silent";
+    case Counter::kOdometerGaps:
+      return "odometer_gaps";
+    case Counter::kGnssGaps:
+      return "gnss_gaps";
     case Counter::kSize:
       break;
   }

@@ -20,6 +20,8 @@ enum class Counter {
   kDuplicateSamples,     // a sample with the time of the previous one of its sensor: dropped
   kNonFiniteSamples,     // NaN or infinite values: dropped
   kDroppedWithoutImu,    // odometer and GNSS data dropped while the IMU was silent
+  kOdometerGaps,         // odometer intervals longer than max_odometer_gap_s
+  kGnssGaps,             // rover epochs more than gnss_gap_warning_s after the previous one
   kSize
 };
 

@@ -55,6 +55,12 @@ void Calibrator::dropped(Counter c, double t, const std::string& what) {
   }
 }
 
+void Calibrator::noted(Counter c, const std::string& what) {
+  run_.count(c);
+  if (warned_.insert(c).second)
+    run_.warn(what + " (further ones are counted in " + counterName(c) + ")");
+}
+
 void Calibrator::addImu(const ImuSample& s) {
   BusyTimer busy(busy_s_);
   if (!std::isfinite(s.t) || !s.gyro.allFinite() || !s.acc.allFinite()) {
@@ -146,6 +152,13 @@ void Calibrator::release(Datum& d) {
                 "odometer sample repeating the previous one's time");
         return;
       }
+      if (!buf_.odom.empty() && d.odom.t - buf_.odom.back().t > options_.max_odometer_gap_s) {
+        noted(Counter::kOdometerGaps, "odometer gap of " +
+                                          fixedText(d.odom.t - buf_.odom.back().t, 2) +
+                                          " s after t=" + timeText(buf_.odom.back().t) +
+                                          " (calibration.max_odometer_gap_s): the IMU navigates "
+                                          "alone through it");
+      }
       buf_.odom.push_back(d.odom);
       frontier_ = d.odom.t;
       break;
@@ -187,6 +200,12 @@ void Calibrator::release(Datum& d) {
 }
 
 void Calibrator::acceptRover(ObsEpoch e) {
+  if (std::isfinite(last_rover_t_) && e.t - last_rover_t_ > options_.gnss_gap_warning_s) {
+    noted(Counter::kGnssGaps, "no GNSS epoch for " + fixedText(e.t - last_rover_t_, 1) +
+                                  " s after t=" + timeText(last_rover_t_) +
+                                  " (an outage, calibration.gnss_gap_warning_s): IMU and "
+                                  "odometer alone through it");
+  }
   last_rover_t_ = e.t;
   if (std::isnan(t_rover_first_)) t_rover_first_ = e.t;
   t_rover_last_ = e.t;

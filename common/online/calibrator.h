@@ -95,6 +95,8 @@ class Calibrator {
   void trim();
   void say(double t, const std::string& text);
   void dropped(Counter c, double t, const std::string& what);
+  /// Counts c and names the first occurrence in a warning (data kept, unlike dropped()).
+  void noted(Counter c, const std::string& what);
   /// An IMU gap [t0, t1] too long to bridge: events before it are finished, the estimator ends,
   /// and initialization starts again at t1 with the calibration (and covariance) carried over.
   void restartAfterGap(double t0, double t1);

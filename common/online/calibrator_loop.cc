@@ -156,7 +156,9 @@ void Calibrator::dispatchRover(const ObsEpoch& rover) {
   static const ObsEpoch kNoBase;  // the LC scheme reads no base epoch
   const ObsEpoch* base = positionsOnly() ? &kNoBase : nearestBase(rover.t);
   if (!base) {
-    run_.count(Counter::kGnssWithoutBase);
+    noted(Counter::kGnssWithoutBase, "the rover epoch at t=" + timeText(rover.t) +
+                                         " has no base epoch within calibration.max_base_offset: "
+                                         "skipped");
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
