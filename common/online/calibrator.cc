@@ -136,7 +136,8 @@ void Calibrator::release(Datum& d) {
         if (gap > options_.max_imu_bridge_s) {
           restartAfterGap(buf_.imu.back().t, s.t);
         } else {
-          run_.warn("IMU gap of " + timeText(gap) + " s after t=" + timeText(buf_.imu.back().t) +
+          run_.warn("IMU gap of " + fixedText(gap, 2) +
+                    " s after t=" + timeText(buf_.imu.back().t) +
                     ": bridged by interpolation, the covariance grows with it");
         }
       }

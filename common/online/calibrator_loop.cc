@@ -248,7 +248,7 @@ void Calibrator::trim() {
 
 void Calibrator::restartAfterGap(double t0, double t1) {
   run_.count(Counter::kImuRestarts);
-  run_.warn("IMU gap of " + timeText(t1 - t0) + " s after t=" + timeText(t0) +
+  run_.warn("IMU gap of " + fixedText(t1 - t0, 2) + " s after t=" + timeText(t0) +
             ": longer than calibration.max_imu_bridge_s; the navigation state restarts from the "
             "data after it, the calibration is carried over with its covariance");
   if (core_) {

@@ -1,0 +1,73 @@
+// A degraded run says why: an odometer gap, a GNSS outage and rover epochs without a base are
+// counted and named once each; the factor graph, like the EKF, leaves out odometer intervals of
+// wheel slip instead of letting them pull the scales (bench/fault_injection.cc measures the rest).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "common/calibration/calibration_inputs.h"
+#include "replay/replay.h"
+#include "sim/simulator.h"
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+CalibrationInputs simulated(const sim::SimConfig& cfg, std::uint64_t seed) {
+  test::TempDir dir;
+  sim::writeDataset(sim::simulate(cfg, seed), dir.file("data"));
+  return loadCalibrationInputs(dir.file("data"));
+}
+
+template <class T>
+void dropBetween(std::vector<T>& v, double t0, double t1) {
+  v.erase(std::remove_if(v.begin(), v.end(), [&](const T& s) { return s.t >= t0 && s.t < t1; }),
+          v.end());
+}
+
+bool says(const CalibrationRun& run, const std::string& text) {
+  return std::any_of(run.warnings.begin(), run.warnings.end(),
+                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+TEST(DegradedRuns, GapsOutagesAndMissingBaseAreCountedAndNamed) {
+  const sim::SimConfig cfg =
+      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+  CalibrationInputs in = simulated(cfg, 33);
+  const double t0 = in.rover.epochs.front().t;
+  dropBetween(in.odom, t0 + 60.0, t0 + 62.0);
+  dropBetween(in.odom, t0 + 90.0, t0 + 92.0);
+  dropBetween(in.rover.epochs, t0 + 70.0, t0 + 100.0);
+  dropBetween(in.base.epochs, t0 + 110.0, t0 + 115.0);
+  for (const char* est : {"ekf", "fgo"}) {
+    SCOPED_TRACE(est);
+    const CalibrationRun run = replayInputs(in, {est, {}, {}}, nullptr);
+    EXPECT_EQ(run.counter(Counter::kOdometerGaps), 2);
+    EXPECT_EQ(run.counter(Counter::kGnssGaps), 1);
+    EXPECT_GE(run.counter(Counter::kGnssWithoutBase), 4);
+    EXPECT_TRUE(says(run, "odometer gap of 2.0")) << run.warnings.front();
+    EXPECT_TRUE(says(run, "no GNSS epoch for 31.0 s")) << run.warnings.front();
+    EXPECT_TRUE(says(run, "has no base epoch within")) << run.warnings.front();
+  }
+  // The clean drive says none of it.
+  const CalibrationRun clean = replayInputs(simulated(cfg, 33), {"ekf", {}, {}}, nullptr);
+  EXPECT_EQ(clean.counter(Counter::kOdometerGaps) + clean.counter(Counter::kGnssGaps) +
+                clean.counter(Counter::kGnssWithoutBase),
+            0);
+}
+
+TEST(DegradedRuns, TheFactorGraphLeavesOutWheelSlip) {
+  // Paper preset, 0.5 s slips at 1.3x speed twice a minute. FGO NEES7 without the gate on seeds
+  // 34-38 and 61: 142, 366, 81, 412, 25, 220; with it 202, 61, 81, 95, 25, 23 (docs/results.md);
+  // the EKF's 11, 33, 6, 16, 9. Seed 35 here.
+  sim::SimConfig cfg =
+      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+  cfg.odometer.slip_rate_per_min = 2.0;
+  const CalibrationInputs in = simulated(cfg, 35);
+  const CalibrationRun run = replayInputs(in, {"fgo", {}, {}}, nullptr);
+  EXPECT_GT(run.counter(Counter::kOdometerRejected), 0);
+  EXPECT_LT(calibrationError(run.final(), in.truth->calib).nees7, 100.0);
+}
+
+}  // namespace
+}  // namespace giocal
