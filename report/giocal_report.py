@@ -130,6 +130,35 @@ def dr_error_figure(err, out):
     plt.close(fig)
 
 
+def gnss_figure(skies, out):
+    """Satellites, PDOP and what became of each epoch (fixed, used, not used) over time."""
+    fig, (a, b) = plt.subplots(2, 1, figsize=(11, 6), sharex=True)
+    for name, g in skies:
+        t0 = g["t"][0]
+        t = [x - t0 for x in g["t"]]
+        a.step(t, g["satellites"], where="post", label=f"{name}: satellites")
+        b.plot(t, g["pdop"], label=f"{name}: PDOP")
+        top = max(g["satellites"] + [1]) + 1
+        for flag, colour, what in ((lambda u, f: f, "g", "fixed"),
+                                   (lambda u, f: u and not f, "orange", "float"),
+                                   (lambda u, f: not u, "r", "not used")):
+            pick = [x for x, u, f in zip(t, g["used"], g["fixed"]) if flag(u, f)]
+            if pick:
+                a.plot(pick, [top] * len(pick), "|", color=colour, label=f"{name}: {what}")
+    a.set_ylabel("satellites above the mask")
+    a.set_ylim(bottom=0)
+    b.set_ylabel("PDOP")
+    b.set_ylim(bottom=0)
+    b.set_xlabel("time since the first GNSS epoch [s]")
+    for ax in (a, b):
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best", fontsize=8)
+    fig.suptitle("GNSS: satellites, fix status and PDOP")
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    plt.close(fig)
+
+
 def nees_figure(runs, truth, out):
     fig, ax = plt.subplots(figsize=(11, 4))
     keys = [p[0] for p in PARAMS if p[0] != "pz"]
@@ -230,6 +259,12 @@ def main(argv):
             if truth:
                 nees_figure(runs, truth, os.path.join(out, "nees.png"))
                 figures.append(("nees.png", "NEES over time"))
+        skies = [(n, read_csv(os.path.join(d, "gnss.csv"))) for n, d in calibrate_dirs
+                 if os.path.exists(os.path.join(d, "gnss.csv"))]
+        skies = [(n, g) for n, g in skies if g.get("t")]
+        if skies:
+            gnss_figure(skies, os.path.join(out, "gnss.png"))
+            figures.append(("gnss.png", "Satellites, fix status and PDOP"))
         tracks = [(n, read_csv(os.path.join(d, "trajectory.csv"))) for n, d in calibrate_dirs
                   if os.path.exists(os.path.join(d, "trajectory.csv"))]
         if os.path.exists(os.path.join(run, "error.csv")):  # deadreckon

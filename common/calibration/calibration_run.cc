@@ -86,7 +86,7 @@ CalibrationError calibrationError(const CalibrationEstimate& e, const OdometerCa
 }
 
 std::vector<std::string> calibrationOutputFiles() {
-  return {"calibration.csv", "trajectory.csv", "summary.json"};
+  return {"calibration.csv", "trajectory.csv", "gnss.csv", "summary.json"};
 }
 
 long CalibrationRun::counter(Counter c) const {

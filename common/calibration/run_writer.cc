@@ -21,9 +21,16 @@ RunWriter::RunWriter(OutputSet& set, std::string prefix)
     : set_(set),
       prefix_(std::move(prefix)),
       calibration_(set.open(prefix_ + "calibration.csv")),
-      trajectory_(set.open(prefix_ + "trajectory.csv")) {
+      trajectory_(set.open(prefix_ + "trajectory.csv")),
+      gnss_(set.open(prefix_ + "gnss.csv")) {
   writeHeader(calibration_, calibrationCsvHeader());
   writeHeader(trajectory_, truthCsvHeader());
+  writeHeader(gnss_, {"t", "satellites", "pdop", "used", "fixed"});
+}
+
+void RunWriter::gnssEpoch(const GnssEpochRecord& g) {
+  writeRow(gnss_, {g.t, static_cast<double>(g.satellites), g.pdop, g.used ? 1.0 : 0.0,
+                   g.fixed ? 1.0 : 0.0});
 }
 
 void RunWriter::estimate(const CalibrationEstimate& e) {
@@ -34,7 +41,7 @@ void RunWriter::trajectory(const TruthSample& s) { writeRow(trajectory_, truthCs
 
 void RunWriter::finish(const CalibrationRun& run, const OdometerCalibration* truth) {
   std::map<std::string, std::uintmax_t> files;
-  for (const char* name : {"calibration.csv", "trajectory.csv"}) {
+  for (const char* name : {"calibration.csv", "trajectory.csv", "gnss.csv"}) {
     files[name] = set_.close(prefix_ + name);
   }
   set_.open(prefix_ + "summary.json", true) << summaryJson(run, truth, files);

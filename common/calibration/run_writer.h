@@ -1,6 +1,7 @@
-// RunWriter: writes a calibration run's three outputs into an OutputSet as the run goes
-// (calibration.csv and trajectory.csv row by row, so memory stays flat), then summary.json naming
-// the other two with their sizes; the set moves them into place together (io/output_set.h).
+// RunWriter: writes a calibration run's outputs into an OutputSet as the run goes
+// (calibration.csv, trajectory.csv and gnss.csv row by row, so memory stays flat), then
+// summary.json naming the others with their sizes; the set moves them into place together
+// (io/output_set.h).
 #pragma once
 
 #include <string>
@@ -16,9 +17,10 @@ class RunWriter : public RunSink {
   explicit RunWriter(OutputSet& set, std::string prefix = "");
 
   void estimate(const CalibrationEstimate& e) override;
+  void gnssEpoch(const GnssEpochRecord& g) override;
   void trajectory(const TruthSample& s) override;
 
-  /// Closes the two CSV files and writes summary.json (the set's marker) naming them.
+  /// Closes the CSV files and writes summary.json (the set's marker) naming them.
   void finish(const CalibrationRun& run, const OdometerCalibration* truth);
 
  private:
@@ -26,6 +28,7 @@ class RunWriter : public RunSink {
   std::string prefix_;
   std::ostream& calibration_;
   std::ostream& trajectory_;
+  std::ostream& gnss_;
 };
 
 }  // namespace giocal

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "common/calibration/weak_directions.h"
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/sky_view.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "common/online/busy_timer.h"
@@ -181,6 +183,14 @@ void Calibrator::dispatchRover(const ObsEpoch& rover) {
   if (out.used) {
     ++run_.gnss_epochs;
     run_.fixed_epochs += out.fixed;
+  }
+  if (sink_) {
+    SkyView sky;
+    if (!positionsOnly()) {
+      const Eigen::Vector3d rx_e = LocalFrame(buf_.base_e).ecefFromEnu(core_->nav().p_n_b);
+      sky = skyView(rover, *orbits_, rx_e, options_.dd.elevation_mask_deg);
+    }
+    sink_->gnssEpoch({rover.t, sky.satellites, sky.pdop, out.used, out.fixed});
   }
   if (out.recorded) onEstimate(out.estimate);
   core_->trajectoryUpTo(rover.t, [&](const TruthSample& s) {

@@ -1,5 +1,6 @@
 // RunSink: where an online calibrator hands what it produces as it goes: each calibration
-// estimate, each trajectory sample, and live events (convergence, warnings) in words.
+// estimate, each GNSS epoch's sky and outcome, each trajectory sample, and live events
+// (convergence, warnings) in words.
 #pragma once
 
 #include <string>
@@ -10,10 +11,20 @@
 
 namespace giocal {
 
+/// One GNSS epoch as the estimator took it: the sky (SkyView) and what became of it.
+struct GnssEpochRecord {
+  double t = 0.0;
+  int satellites = 0;  // rover satellites above the mask with an ephemeris (0 for the LC scheme)
+  double pdop = 0.0;   // NaN with fewer than four
+  bool used = false;   // counted as a GNSS epoch of the run
+  bool fixed = false;  // validated ambiguity fixes held (LC: an RTK-fixed solution)
+};
+
 class RunSink {
  public:
   virtual ~RunSink() = default;
   virtual void estimate(const CalibrationEstimate&) {}
+  virtual void gnssEpoch(const GnssEpochRecord&) {}
   virtual void trajectory(const TruthSample&) {}
   /// A live event: data time [s] and one line of text.
   virtual void event(double /*t*/, const std::string& /*text*/) {}

@@ -92,7 +92,7 @@ TEST(InterruptedOutputs, ARunStoppedWhileWritingLeavesTheEarlierSetWholeAndNoTem
   // Piped, the run shows no progress line (ProgressLine draws only on a terminal).
   EXPECT_EQ(contentOf(dir.file("ekf.log")).find("of the data"), std::string::npos);
   const auto files = verifyOutputSet(out + "/summary.json");
-  EXPECT_EQ(files.size(), 2u);
+  EXPECT_EQ(files.size(), 3u);  // calibration.csv, trajectory.csv, gnss.csv
   EXPECT_EQ(files.count("calibration.csv"), 1u);
   const std::string ekf_calibration = contentOf(out + "/calibration.csv");
 

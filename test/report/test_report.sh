@@ -17,7 +17,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$giocal" report --run "$work/cmp" --data "$work/data" --out "$work/rep" > /dev/null
 "$giocal" report --run "$work/dr" --data "$work/data" --out "$work/rep_dr" > /dev/null
 
-for f in rep/convergence.png rep/nees.png rep/trajectory.png rep_dr/dr_error.png \
+for f in rep/convergence.png rep/nees.png rep/gnss.png rep/trajectory.png rep_dr/dr_error.png \
          rep_dr/trajectory.png; do
   [ -f "$work/$f" ] || fail "$f missing"
   [ "$(stat -c %s "$work/$f")" -gt 10000 ] || fail "$f is $(stat -c %s "$work/$f") bytes"
