@@ -1,6 +1,7 @@
 #include "common/gnss/pos_reader.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -95,7 +96,19 @@ std::vector<PositionFix> readPosFile(const std::string& path) {
     f.cov_enu << sde * sde, cov(sdne), cov(sdeu), cov(sdne), sdn * sdn, cov(sdun), cov(sdeu),
         cov(sdun), sdu * sdu;
     if (Eigen::LLT<Eigen::Matrix3d>(f.cov_enu).info() != Eigen::Success) {
-      throw DataError(path, line, "the covariance is not positive definite");
+      // A near-singular covariance (few satellites) written to 0.1 mm can round to correlations
+      // just past 1: the nearest positive definite matrix is the solution's. Beyond rounding the
+      // file is wrong.
+      const Eigen::Vector3d sd = f.cov_enu.diagonal().cwiseSqrt();
+      const Eigen::Matrix3d rho =
+          sd.cwiseInverse().asDiagonal() * f.cov_enu * sd.cwiseInverse().asDiagonal();
+      if ((rho - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1.01) {
+        throw DataError(path, line, "the covariance is not positive definite");
+      }
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(f.cov_enu);
+      const double floor = 1e-6 * f.cov_enu.diagonal().maxCoeff();
+      f.cov_enu = eig.eigenvectors() * eig.eigenvalues().cwiseMax(floor).asDiagonal() *
+                  eig.eigenvectors().transpose();
     }
     f.quality = static_cast<int>(q);
     f.satellites = static_cast<int>(ns);

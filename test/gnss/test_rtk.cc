@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
 #include <fstream>
 
 #include "common/geodesy/wgs84.h"
@@ -169,6 +170,17 @@ TEST(PosFile, ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances) {
   EXPECT_LT((back[0].cov_enu - Q_enu).norm(), 1e-4);
   EXPECT_EQ(back[0].quality, 2);
 
+  // A near-singular covariance (4 satellites) rounded to 0.1 mm, correlation 1.0001 (giocal rtk
+  // wrote this row on the field preset, seed 41): read as the nearest positive definite matrix.
+  dir.write("near.pos",
+            "% header\n2024/06/24 08:33:19.000   35.135297365  136.977575530    "
+            "60.6641   1   4   0.3967   0.2780   0.3804   0.3321  -0.3250  -0.3882   "
+            "0.00    4.1\n");
+  const std::vector<PositionFix> near = readPosFile(dir.file("near.pos"));
+  ASSERT_EQ(near.size(), 1u);
+  EXPECT_EQ(Eigen::LLT<Eigen::Matrix3d>(near[0].cov_enu).info(), Eigen::Success);
+  EXPECT_NEAR(std::sqrt(near[0].cov_enu(1, 1)), 0.3967, 1e-3);
+
   // Bad rows name the file and line.
   for (const std::string& bad :
        {std::string("2024/13/01 00:00:00.000 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n"),
@@ -176,7 +188,8 @@ TEST(PosFile, ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances) {
         std::string("2024/06/01 00:00:00.000 35 136 50 1 7 -0.1 0.1 0.1 0 0 0\n"),
         std::string("2024/06/01 00:00:00.000 35 136 50 1 7 0.1 0.1 nan 0 0 0\n"),
         std::string("2024/06/01 00:00:00.000 35 136\n"),
-        std::string("2316 1e99 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n")}) {
+        std::string("2316 1e99 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n"),
+        std::string("2024/06/01 00:00:00.000 35 136 50 1 7 0.1 0.1 0.1 0.2 0 0\n")}) {
     dir.write("bad.pos", "% header\n" + bad);
     try {
       readPosFile(dir.file("bad.pos"));
