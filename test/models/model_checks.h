@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <random>
 #include <vector>
 
 #include "common/math/rotation.h"
@@ -12,6 +13,20 @@
 #include "numeric_jacobian.h"
 
 namespace giocal::test {
+
+/// A random value of block b: components uniform in +-scale (a rotation by such angles).
+inline Eigen::VectorXd randomBlockValue(const StateBlock& b, double scale, std::mt19937& gen) {
+  std::uniform_real_distribution<double> u(-scale, scale);
+  auto draw = [&] { return u(gen); };
+  if (b.kind == BlockKind::kRotation) {
+    Eigen::VectorXd q(4);
+    quatToWxyz(Quat(expSO3(Vec3(draw(), draw(), draw()))), q.data());
+    return q;
+  }
+  Eigen::VectorXd v(b.size);
+  for (int i = 0; i < b.size; ++i) v[i] = draw();
+  return v;
+}
 
 /// values[k] holds block k's ambient values.
 inline std::vector<const double*> pointers(const std::vector<Eigen::VectorXd>& values) {
