@@ -197,8 +197,12 @@ CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, R
   streams.push_back(vectorStream<ImuSample>(in.imu, [&c](const ImuSample& s) { c.addImu(s); }));
   streams.push_back(
       vectorStream<OdomSample>(in.odom, [&c](const OdomSample& s) { c.addOdometer(s); }));
-  streams.push_back(
-      vectorStream<ObsEpoch>(in.rover.epochs, [&c](const ObsEpoch& e) { c.addRover(e); }));
+  // Without raw GNSS the calibrator makes the epochs from the positions; inputs loaded with a
+  // .pos carry the same epochs (loadCalibrationInputs), which would arrive twice.
+  if (!in.description.rover_obs.empty()) {
+    streams.push_back(
+        vectorStream<ObsEpoch>(in.rover.epochs, [&c](const ObsEpoch& e) { c.addRover(e); }));
+  }
   streams.push_back(
       vectorStream<ObsEpoch>(in.base.epochs, [&c](const ObsEpoch& e) { c.addBase(e); }));
   streams.push_back(

@@ -48,11 +48,7 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
 }
 
 void Calibrator::dropped(Counter c, double t, const std::string& what) {
-  run_.count(c);
-  if (warned_.insert(c).second) {
-    run_.warn(what + " at t=" + timeText(t) + " dropped (further ones are counted in " +
-              counterName(c) + ")");
-  }
+  noted(c, what + " at t=" + timeText(t) + " dropped");
 }
 
 void Calibrator::noted(Counter c, const std::string& what) {
