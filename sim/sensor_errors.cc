@@ -22,9 +22,12 @@ double gaussian(std::mt19937_64& rng, double sd) {
   return n(rng) * sd;
 }
 
-Eigen::Matrix3d scaleAndMisalignment(std::mt19937_64& rng, double scale_ppm, double mis_deg) {
+// (I + diag(s)) R: per-axis scale errors s after a misalignment rotation R, returned in `R_out`.
+Eigen::Matrix3d scaleAndMisalignment(std::mt19937_64& rng, double scale_ppm, double mis_deg,
+                                     Eigen::Matrix3d* R_out = nullptr) {
   const Eigen::Vector3d s = gaussian3(rng, scale_ppm * 1e-6);
   const Eigen::Vector3d m = gaussian3(rng, mis_deg * kDeg);
+  if (R_out) *R_out = expSO3(m);
   return (Eigen::Matrix3d::Identity() + Eigen::Matrix3d(s.asDiagonal())) * expSO3(m);
 }
 
@@ -35,8 +38,8 @@ double quantize(double x, double q) { return q > 0.0 ? std::round(x / q) * q : x
 ImuErrors::ImuErrors(const ImuErrorSpec& spec, std::mt19937_64& rng) : spec_(spec) {
   b_g_ = gaussian3(rng, spec.gyro_bias_deg_h * kDeg / 3600.0);
   b_a_ = gaussian3(rng, spec.accel_bias_mgal * kMgal);
-  T_g_ = scaleAndMisalignment(rng, spec.scale_ppm, spec.misalignment_deg);
-  T_a_ = scaleAndMisalignment(rng, spec.scale_ppm, spec.misalignment_deg);
+  T_g_ = scaleAndMisalignment(rng, spec.scale_ppm, spec.misalignment_deg, &R_g_b_);
+  T_a_ = scaleAndMisalignment(rng, spec.scale_ppm, spec.misalignment_deg, &R_a_b_);
 }
 
 ImuSample ImuErrors::measure(double t, const Eigen::Vector3d& gyro, const Eigen::Vector3d& acc,

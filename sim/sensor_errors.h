@@ -7,6 +7,7 @@
 #include <random>
 
 #include "common/imu/imu_sample.h"
+#include "common/math/so3.h"
 #include "common/odometer/odom_sample.h"
 #include "sim/sim_config.h"
 
@@ -21,11 +22,16 @@ class ImuErrors {
                     std::mt19937_64& rng);
   const Eigen::Vector3d& gyroBias() const { return b_g_; }
   const Eigen::Vector3d& accelBias() const { return b_a_; }
+  /// The rotation from the ideal IMU axes b to the measuring axes the estimators calibrate
+  /// against: the mean of the gyro triad's and the accelerometer triad's misalignment rotations
+  /// (roll and pitch of the extrinsic are seen through both; docs/design.md "IMU axes").
+  Eigen::Matrix3d measuringAxes() const { return expSO3(0.5 * (logSO3(R_a_b_) + logSO3(R_g_b_))); }
 
  private:
   ImuErrorSpec spec_;
   Eigen::Vector3d b_g_, b_a_;
-  Eigen::Matrix3d T_g_, T_a_;  // scale and misalignment: measured = T * true
+  Eigen::Matrix3d T_g_, T_a_;      // scale and misalignment: measured = T * true
+  Eigen::Matrix3d R_a_b_, R_g_b_;  // the rotations in T_a and T_g
 };
 
 class OdometerErrors {

@@ -12,6 +12,7 @@
 #include "common/math/rotation.h"
 #include "common/odometer/odometer_preintegration.h"
 #include "common/odometer/vehicle_velocity.h"
+#include "sim/sensor_errors.h"
 #include "sim/simulator.h"
 #include "temp_dir.h"
 
@@ -225,6 +226,48 @@ TEST(SimConfig, ManyLapsReadFast) {
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(c.segments.size(), 2u + 4u * 1000u);
   EXPECT_LT(s, 0.5);
+}
+
+}  // namespace
+}  // namespace giocal
+
+namespace giocal {
+namespace {
+
+// The truth states the extrinsic of the IMU's measuring axes: the mean of the rotations that the
+// gyro and accelerometer triads apply to what they measure (each recovered here from noise-free
+// measurements of the three unit vectors), and truth_calib / truth.csv rotate with it.
+TEST(ImuMeasuringAxes, TruthIsStatedInTheMeanOfTheGyroAndAccelerometerAxes) {
+  sim::ImuErrorSpec spec;
+  spec.gyro_bias_deg_h = spec.accel_bias_mgal = spec.arw_deg_sqrt_h = spec.vrw_m_s_sqrt_h = 0.0;
+  spec.misalignment_deg = 1.0;
+  std::mt19937_64 rng(7);
+  sim::ImuErrors errors(spec, rng);
+  Mat3 R_g, R_a;
+  for (int i = 0; i < 3; ++i) {
+    const ImuSample s = errors.measure(0.0, Vec3::Unit(i), Vec3::Unit(i), 0.01, rng);
+    R_g.col(i) = s.gyro;
+    R_a.col(i) = s.acc;
+  }
+  EXPECT_GT(logSO3(R_g.transpose() * R_a).norm(), 0.1 * kDegToRad);  // the triads differ
+  const Mat3 M = errors.measuringAxes();
+  EXPECT_LT((logSO3(M) - 0.5 * (logSO3(R_g) + logSO3(R_a))).norm(), 1e-12);
+
+  sim::SimConfig c = noiseFreeConfig();
+  const sim::SimulatedLogs ideal = sim::simulate(c, 3);
+  EXPECT_LT(
+      (ideal.truth_calib.calib.q_b_m.toRotationMatrix() - c.truth.q_b_m.toRotationMatrix()).norm(),
+      1e-12);
+  c.imu.misalignment_deg = 1.0;
+  const sim::SimulatedLogs tilted = sim::simulate(c, 3);
+  const Mat3 R_a_b = tilted.truth_calib.calib.q_b_m.toRotationMatrix() *
+                     c.truth.q_b_m.toRotationMatrix().transpose();
+  EXPECT_GT(logSO3(R_a_b).norm(), 0.1 * kDegToRad);
+  EXPECT_LT((tilted.truth_calib.calib.p_b_m - R_a_b * c.truth.p_b_m).norm(), 1e-12);
+  // truth.csv's attitude is that of the same measuring axes.
+  const Mat3 R_b_a = ideal.truth_n.front().q_n_b.toRotationMatrix().transpose() *
+                     tilted.truth_n.front().q_n_b.toRotationMatrix();
+  EXPECT_LT((R_b_a - R_a_b.transpose()).norm(), 1e-9);
 }
 
 }  // namespace
