@@ -14,6 +14,12 @@
 //                           m wrong per axis and held; the same error, estimated online) [--box-csv
 //                           <file>] (per seed and scheme, errors and sigmas at 0, 60 and 120 s
 //                           after the first rover epoch: the paper's box-plot statistics)
+//                           [--shard k/n] (only every n-th seed from the k-th: one of n
+//                           independent processes) [--results <file.csv>] (the per-seed rows, for
+//                           --merge) [--label <name>] (the estimator's name in the rows, e.g.
+//                           fgo-batch for a run with a window covering the whole drive)
+//        giocal_monte_carlo --merge <file.csv>... [--batch <name>]   (prints the summary of the
+//                           shards' rows; --batch: the accuracy targets against that estimator)
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -29,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/monte_carlo_results.h"
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/initial_state.h"
@@ -63,57 +70,28 @@ void errorsAndSigmas(const giocal::CalibrationEstimate& est,
   }
 }
 
-struct Tally {
-  // Per seed: signed final error and its reported 1-sigma of X, Y, roll, pitch, yaw, s_v, s_w.
-  std::map<int, std::array<double, 7>> error, sigma;
-  std::vector<double> nees, wall, rtf, fix, epoch;
-  int failures = 0;
-};
-
-double mean(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;
-  return v.empty() ? NAN : s / static_cast<double>(v.size());
-}
-
-/// The reported final sigma against the one implied by how much the final errors still follow
-/// the guess's errors: for a linear-Gaussian estimator, final = (P / P0) guess + noise.
-struct Implied {
-  double reported[7], b[7], implied[7];
-};
-Implied impliedSigma(const Tally& t, const Tally& guess) {
-  Implied out{};
-  for (size_t k = 0; k < 7; ++k) {
-    double eg = 0, gg = 0, s2 = 0, p2 = 0;
-    int n = 0;
-    for (const auto& [seed, e] : t.error) {
-      const auto g = guess.error.find(seed);
-      if (g == guess.error.end()) continue;
-      eg += e[k] * g->second[k];
-      gg += g->second[k] * g->second[k];
-      s2 += std::pow(t.sigma.at(seed)[k], 2);
-      p2 += std::pow(guess.sigma.at(seed)[k], 2);
-      ++n;
-    }
-    out.reported[k] = n ? std::sqrt(s2 / n) : NAN;
-    out.b[k] = gg > 0 ? eg / gg : NAN;
-    out.implied[k] = n ? std::sqrt(p2 / n * std::max(out.b[k], 0.0)) : NAN;
-  }
-  return out;
-}
-
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
-  int seeds = 20, first = 1;
-  std::string config;
+  int seeds = 20, first = 1, shard = 1, shards = 1;
+  std::string config, results, label, batch;
   double arw = -1.0, gyro_bias = -1.0, straight_s = -1.0, arc_s = -1.0;  // negative: the preset's
   bool guess_at_truth = false;
-  std::vector<std::string> schemes{"TC"};
-  std::string box_csv;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string k = argv[i], v = argv[i + 1];
+  std::vector<std::string> schemes{"TC"}, merge;
+  std::string box_csv, only;
+  for (int i = 1; i < argc; ++i) {
+    const std::string k = argv[i];
+    if (k == "--merge") {
+      for (++i; i < argc && std::string(argv[i]).rfind("--", 0) != 0; ++i) merge.push_back(argv[i]);
+      --i;
+      continue;
+    }
+    if (i + 1 >= argc) {
+      std::cerr << k << ": missing value\n";
+      return 2;
+    }
+    const std::string v = argv[++i];
     if (k == "--preset")
       preset = v;
     else if (k == "--seeds")
@@ -133,10 +111,23 @@ int main(int argc, char** argv) {
     else if (k == "--guess-at-truth")
       guess_at_truth = std::stoi(v) != 0;
     else if (k == "--estimator")
-      continue;  // read below
+      only = v;
     else if (k == "--box-csv")
       box_csv = v;
-    else if (k == "--schemes") {
+    else if (k == "--results")
+      results = v;
+    else if (k == "--label")
+      label = v;
+    else if (k == "--batch")
+      batch = v;
+    else if (k == "--shard") {
+      char tail = 0;
+      if (std::sscanf(v.c_str(), "%d/%d%c", &shard, &shards, &tail) != 2 || shards < 1 ||
+          shard < 1 || shard > shards) {
+        std::cerr << "--shard " << v << ": expected k/n with 1 <= k <= n\n";
+        return 2;
+      }
+    } else if (k == "--schemes") {
       schemes.clear();
       std::stringstream ss(v);
       for (std::string s; std::getline(ss, s, ',');) {
@@ -150,6 +141,12 @@ int main(int argc, char** argv) {
       std::cerr << "unknown option " << k << "\n";
       return 2;
     }
+  }
+  if (!merge.empty()) {
+    giocal::bench::RunDescription run;
+    const std::vector<giocal::bench::SeedResult> rows = giocal::bench::readSeedResults(merge, &run);
+    giocal::bench::printSummary(run, rows, batch);
+    return 0;
   }
   giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
   if (arw >= 0.0) cfg.imu.arw_deg_sqrt_h = arw;
@@ -168,57 +165,56 @@ int main(int argc, char** argv) {
   };
   setDuration("straight", straight_s);
   setDuration("arc", arc_s);
-  std::string edits;
+  // The preset by its path relative to the sources, so that shards run from anywhere agree.
+  std::string edits = std::filesystem::path(preset).filename().string();
   if (straight_s >= 0.0) edits += ", straight " + std::to_string(straight_s) + " s";
   if (arc_s >= 0.0) edits += ", arcs " + std::to_string(arc_s) + " s";
+  char gyro[96];
+  std::snprintf(gyro, sizeof gyro, "; gyro ARW %g deg/sqrt(h), bias %g deg/h",
+                cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h);
+  const giocal::bench::RunDescription description{edits + gyro, guess_at_truth};
   const giocal::GiocalConfig parsed = giocal::readGiocalConfig(config);
   const giocal::CalibrationOptions options = parsed.calibration;
   const giocal::FgoOptions fgo_options = parsed.fgo;
   std::map<std::string, Runner> estimators;
   for (const std::string& name : giocal::estimatorNames()) {
+    if (!only.empty() && name != only) continue;
     estimators[name] = [name, &fgo_options](const giocal::CalibrationInputs& in,
                                             const giocal::CalibrationOptions& o,
                                             giocal::RunSink* sink) {
       return giocal::replayInputs(in, {name, o, fgo_options}, sink);
     };
   }
-  std::string only;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (std::string(argv[i]) == "--estimator") only = argv[i + 1];
+  if (estimators.empty()) {
+    std::cerr << "--estimator " << only << ": not an estimator\n";
+    return 2;
   }
-  if (!only.empty()) {
-    for (auto it = estimators.begin(); it != estimators.end();) {
-      it = it->first == only ? std::next(it) : estimators.erase(it);
-    }
-  }
-  std::map<std::string, Tally> tally;
+  std::vector<giocal::bench::SeedResult> rows;
   // One directory per process, so that runs in parallel do not overwrite each other's datasets.
   const std::string work =
       std::filesystem::temp_directory_path() / ("giocal_monte_carlo_" + std::to_string(::getpid()));
   std::printf("%-6s %-5s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
               "roll", "pitch", "yaw", "s_v", "s_w", "NEES7", "fix%", "wall s");
-  // Adds one final estimate to a scheme's tally and prints its row.
+  // Adds one final estimate to the rows and prints it.
   auto score = [&](int seed, const std::string& name, const giocal::CalibrationEstimate& est,
                    const giocal::OdometerCalibration& truth, const giocal::CalibrationRun* r) {
-    Tally& t = tally[name];
-    const giocal::CalibrationError e = giocal::calibrationError(est, truth);
-    double v[7], sd[7];
-    errorsAndSigmas(est, truth, v, sd);
-    for (int k = 0; k < 7; ++k) {
-      t.error[seed][static_cast<size_t>(k)] = v[k];
-      t.sigma[seed][static_cast<size_t>(k)] = sd[k];
-    }
-    t.nees.push_back(e.nees7);
+    giocal::bench::SeedResult row;
+    row.seed = seed;
+    row.name = name;
+    errorsAndSigmas(est, truth, row.error.data(), row.sigma.data());
+    row.nees7 = giocal::calibrationError(est, truth).nees7;
+    row.wall_s = row.epoch_s = row.real_time_factor = row.fix_percent = NAN;
     if (r) {
-      t.wall.push_back(r->wall_time_s);
-      if (r->timing.count("gnss_epoch_mean_s"))
-        t.epoch.push_back(r->timing.at("gnss_epoch_mean_s"));
-      t.rtf.push_back(r->data_duration_s / r->wall_time_s);
-      t.fix.push_back(100.0 * r->fixRate());
+      row.wall_s = r->wall_time_s;
+      if (r->timing.count("gnss_epoch_mean_s")) row.epoch_s = r->timing.at("gnss_epoch_mean_s");
+      row.real_time_factor = r->data_duration_s / r->wall_time_s;
+      row.fix_percent = 100.0 * r->fixRate();
     }
+    rows.push_back(row);
+    const double* v = row.error.data();
     std::printf("%-6d %-5s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n", seed,
-                name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], e.nees7,
-                r ? 100.0 * r->fixRate() : NAN, r ? r->wall_time_s : NAN);
+                name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], row.nees7, row.fix_percent,
+                row.wall_s);
   };
   std::FILE* box = box_csv.empty() ? nullptr : std::fopen(box_csv.c_str(), "w");
   if (!box_csv.empty() && !box) {
@@ -232,6 +228,7 @@ int main(int argc, char** argv) {
     std::fprintf(box, "\n");
   }
   for (int seed = first; seed < first + seeds; ++seed) {
+    if ((seed - first) % shards != shard - 1) continue;
     std::filesystem::remove_all(work);
     const giocal::sim::SimulatedLogs logs =
         giocal::sim::simulate(cfg, static_cast<std::uint64_t>(seed));
@@ -254,14 +251,19 @@ int main(int argc, char** argv) {
         o.p_b_g_sigma = 0.1;
       }
       for (const auto& [name, run] : estimators) {
-        const std::string key = scheme == "TC" ? name : name + " " + scheme;
+        const std::string base = label.empty() ? name : label;
+        const std::string key = scheme == "TC" ? base : base + " " + scheme;
         giocal::CalibrationRun r;
         giocal::RunRecording rec;
         try {
           r = run(in_s, o, &rec);
         } catch (const std::exception& e) {
           std::printf("%-6d %-4s failed: %s\n", seed, key.c_str(), e.what());
-          ++tally[key].failures;
+          giocal::bench::SeedResult failed;
+          failed.seed = seed;
+          failed.name = key;
+          failed.failed = true;
+          rows.push_back(failed);
           continue;
         }
         score(seed, key, r.final(), in.truth->calib, &r);
@@ -283,60 +285,14 @@ int main(int argc, char** argv) {
   }
   if (box) std::fclose(box);
   std::filesystem::remove_all(work);
-  std::printf(
-      "\nMean absolute calibration errors over %d seeds (%s%s; gyro ARW %g deg/sqrt(h), bias %g "
-      "deg/h%s)\n",
-      seeds, preset.c_str(), edits.c_str(), cfg.imu.arw_deg_sqrt_h, cfg.imu.gyro_bias_deg_h,
-      guess_at_truth ? "; initial guess at the truth" : "");
-  std::printf("%-10s %8s %8s %8s %8s %8s %10s %10s | %8s %8s %9s\n", "scheme", "X m", "Y m",
-              "roll deg", "pitch", "yaw", "V scale", "W scale", "NEES7", "fix %", "x real");
-  std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.1e %10.1e |\n", "paper TC", 0.06, 0.05, 0.24,
-              0.05, 3.29, 6.0e-4, 3.1e-3);
-  for (const auto& [name, t] : tally) {
-    double mean_abs[7], rms_z[7];
-    for (size_t k = 0; k < 7; ++k) {
-      std::vector<double> a, z2;
-      for (const auto& [seed, e] : t.error) {
-        a.push_back(std::abs(e[k]));
-        z2.push_back(std::pow(e[k] / t.sigma.at(seed)[k], 2));
-      }
-      mean_abs[k] = mean(a);
-      rms_z[k] = std::sqrt(mean(z2));
-    }
-    std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e | %8.2f %8.1f %9.0f\n",
-                (name == "guess" ? "guess" : "giocal " + name).c_str(), mean_abs[0], mean_abs[1],
-                mean_abs[2], mean_abs[3], mean_abs[4], mean_abs[5], mean_abs[6], mean(t.nees),
-                mean(t.fix), mean(t.rtf));
-    std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.2f %10.2f |\n", "  err/sigma", rms_z[0],
-                rms_z[1], rms_z[2], rms_z[3], rms_z[4], rms_z[5], rms_z[6]);
-    if (name != "guess" && !guess_at_truth && tally.count("guess")) {
-      const Implied im = impliedSigma(t, tally.at("guess"));
-      std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e |\n", "  sigma",
-                  im.reported[0], im.reported[1], im.reported[2], im.reported[3], im.reported[4],
-                  im.reported[5], im.reported[6]);
-      std::printf("%-10s %8.2f %8.2f %8.2f %8.2f %8.2f %10.2f %10.2f |\n", "  b", im.b[0], im.b[1],
-                  im.b[2], im.b[3], im.b[4], im.b[5], im.b[6]);
-      std::printf("%-10s %8.3f %8.3f %8.3f %8.3f %8.3f %10.1e %10.1e |\n", "  implied",
-                  im.implied[0], im.implied[1], im.implied[2], im.implied[3], im.implied[4],
-                  im.implied[5], im.implied[6]);
-    }
-    if (!t.epoch.empty())
-      std::printf("  %s: mean solve time per GNSS epoch %.1f ms\n", name.c_str(),
-                  1e3 * mean(t.epoch));
-    if (t.failures) std::printf("  %s failed on %d seeds\n", name.c_str(), t.failures);
-  }
-  std::printf(
-      "NEES7: mean over seeds of the normalized error of the 7 observable states (X, Y, "
-      "roll, pitch, yaw, s_v, s_w); consistent near 7 (95%% of single runs below 14.1).\n"
-      "err/sigma: RMS over seeds of each final error divided by its reported 1-sigma; consistent "
-      "near 1.\n"
-      "sigma: RMS over seeds of the reported final 1-sigma. b: least-squares slope of the final "
-      "error on the guess's error over the seeds (0: the data decide, 1: the guess does).\n"
-      "implied: prior sigma x sqrt(b), the final sigma of an efficient linear-Gaussian estimator "
-      "with that slope; a check of the reported sigma where b is well above 0.\n");
+  giocal::bench::printSummary(description, rows, batch);
+  if (!results.empty()) giocal::bench::writeSeedResults(results, description, rows);
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
   std::printf("peak memory of this process: %.1f MiB\n",
               static_cast<double>(ru.ru_maxrss) / 1024.0);
   return 0;
+} catch (const std::exception& e) {
+  std::cerr << "giocal_monte_carlo: " << e.what() << "\n";
+  return 1;
 }

@@ -4,7 +4,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 packages=(cmake g++ make libeigen3-dev libceres-dev libsuitesparse-dev libboost-program-options-dev libgtest-dev
-  libyaml-cpp-dev nlohmann-json3-dev rtklib librosbag-storage-dev libboost-filesystem-dev libsqlite3-dev python3-matplotlib)
+  libyaml-cpp-dev nlohmann-json3-dev rtklib parallel librosbag-storage-dev libboost-filesystem-dev libsqlite3-dev python3-matplotlib)
 # Packages only the tests need (scripts/test.sh: chromium, which renders the report's page).
 read -r -a extra <<< "${GIOCAL_EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")
