@@ -6,18 +6,48 @@
 # drive of the same robot (bench/field_test_drive.yaml: another route, seed + 1000: new noise)
 # through 1000 s without GNSS after 100 s with it. Prints horizontal MAX and RMSE per scene and
 # scheme (mean over seeds), the initial guess, and the true calibration as the floor.
-# Usage: bench/dead_reckoning.sh [seed...]   (about 5 minutes per seed on an idle machine)
+# Usage: bench/dead_reckoning.sh [--shard k/n] [--results <file.csv>] [seed...]
+#          (about 5 minutes per seed on an idle machine; --shard: only the k-th of every n seeds of
+#          the list, one of n independent processes; --results: keep the per-seed rows)
+#        bench/dead_reckoning.sh --merge <file.csv>...   (the table of several shards' rows)
+# For example, with GNU parallel on two cores:
+#   parallel bench/dead_reckoning.sh --shard {}/2 --results dr{}.csv 41 42 43 44 ::: 1 2
+#   bench/dead_reckoning.sh --merge dr1.csv dr2.csv
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 giocal="$root/build/apps/giocal"
-seeds=("${@:-31 32 33}")
-read -r -a seeds <<< "${seeds[*]}"
+shard=1 shards=1 keep="" merge=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --shard) IFS=/ read -r shard shards <<< "$2"; shift 2 ;;
+    --results) keep="$2"; shift 2 ;;
+    --merge) shift; merge=("$@"); break ;;
+    *) break ;;
+  esac
+done
+if ! [[ "$shard" =~ ^[0-9]+$ && "$shards" =~ ^[0-9]+$ ]] || [ "$shard" -lt 1 ] || [ "$shard" -gt "$shards" ]; then
+  echo "dead_reckoning.sh: --shard $shard/$shards: expected k/n with 1 <= k <= n" >&2; exit 2
+fi
+all=("${@:-31 32 33}")
+read -r -a all <<< "${all[*]}"
+seeds=()
+for i in "${!all[@]}"; do
+  [ $(( i % shards )) -eq $(( shard - 1 )) ] && seeds+=("${all[$i]}")
+done
 work="$(mktemp -d /tmp/giocal_dr.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
 printf 'calibration:\n  ambiguity_resolution: 0\n' > "$work/war.yaml"
 scene_ends=(320 630 940 end)
 results="$work/results.csv"
 echo "seed,scheme,scene,max,rmse" > "$results"
+if [ "${#merge[@]}" -gt 0 ]; then
+  for f in "${merge[@]}"; do
+    [ "$(head -1 "$f")" = "seed,scheme,scene,max,rmse" ] ||
+      { echo "dead_reckoning.sh: $f:1: not a results file of this bench" >&2; exit 1; }
+    tail -n +2 "$f" >> "$results"
+  done
+  seeds=()
+fi
 dr() {  # dr <seed> <scheme> <scene> <calibration source>
   "$giocal" deadreckon --data "$work/test_$1" --calibration "$4" --start 100 --duration 1000 \
     --out "$work/dr" --overwrite > /dev/null
@@ -56,6 +86,7 @@ for seed in "${seeds[@]}"; do
   done
   echo "seed $seed done" >&2
 done
+if [ -n "$keep" ]; then cp "$results" "$keep.tmp" && mv "$keep.tmp" "$keep"; fi
 python3 - "$results" <<'PY'
 import csv, sys, collections
 rows = list(csv.DictReader(open(sys.argv[1])))
