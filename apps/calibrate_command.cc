@@ -58,6 +58,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   replay.options = config.calibration;
   replay.fgo_options = config.fgo;
   replay.positions = job.positions;
+  replay.options_in_effect = config.in_effect;
   replay.options.loosely_coupled = !job.positions.empty();
   coreFactory(job.estimator, replay.options);  // an unknown estimator fails before any output
   if (!job.overwrite) {

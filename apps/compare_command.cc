@@ -36,6 +36,7 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   const GiocalConfig config = readGiocalConfig(job.config);
   replay.options = config.calibration;
   replay.fgo_options = config.fgo;
+  replay.options_in_effect = config.in_effect;
   replay.stop = job.stop;
   OutputSet outputs(out);
   const std::optional<TruthCalibration> truth_file = readFolderTruth(job.data);

@@ -3,6 +3,7 @@
 // the line and the nearest valid key, not a silently kept default.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "common/calibration/calibration_options.h"
@@ -15,6 +16,7 @@ struct GiocalConfig {
   CalibrationOptions calibration;
   FgoOptions fgo;
   RtkOptions rtk;
+  std::map<std::string, std::string> in_effect;  // every option's key and value, defaults included
 };
 
 /// Defaults when `path` is empty. Throws DataError for syntax errors, values out of range and

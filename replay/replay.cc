@@ -185,6 +185,7 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   run.load_time_s = std::max(0.0, total - run.wall_time_s);
+  run.options = job.options_in_effect;
   return run;
 }
 

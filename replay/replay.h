@@ -2,6 +2,7 @@
 // incrementally (calibrate, compare), or data already in memory (tests, Monte Carlo).
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,6 +26,7 @@ struct ReplayJob {
   FgoOptions fgo_options;
   const StopRequest* stop = nullptr;  // when requested, the replay throws Interrupted
   std::string positions;  // the LC scheme's .pos file (options.loosely_coupled), else empty
+  std::map<std::string, std::string> options_in_effect;  // recorded in the run (summary.json)
 };
 
 /// Reads the folder's files sample by sample while calibrating (memory does not grow with the

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -178,6 +179,19 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;
+  if (!run.options.empty()) {
+    // Numbers as numbers, so that readers compare them as the configuration file's values.
+    nlohmann::json o = nlohmann::json::object();
+    for (const auto& [key, value] : run.options) {
+      char* end = nullptr;
+      const double v = std::strtod(value.c_str(), &end);
+      if (!value.empty() && end && *end == '\0')
+        o[key] = v;
+      else
+        o[key] = value;
+    }
+    j["options"] = o;
+  }
   if (truth && run.latest) {
     const CalibrationError err = calibrationError(*run.latest, *truth);
     j["error"] = {{"s_v", err.s_v},

@@ -55,6 +55,7 @@ struct CalibrationRun {
   std::map<std::string, double> timing;          // wall time of parts of the run [s]
   std::map<std::string, double> converged_at;    // parameter -> data time it converged [s]
   std::vector<std::string> warnings;             // bad data met on the way, divergence (capped)
+  std::map<std::string, std::string> options;    // the options in effect, defaults included
   // "ok", or "partial: <why>" when the data after a divergence or an IMU gap allowed no restart:
   // the calibration is then the last one before it.
   std::string status = "ok";

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "common/io/data_error.h"
@@ -148,17 +149,21 @@ double YamlFields::number(const std::string& key, double min, double max) const 
 }
 
 double YamlFields::numberOr(const std::string& key, double fallback, double min, double max) const {
-  return has(key) ? number(key, min, max) : fallback;
+  const double v = has(key) ? number(key, min, max) : fallback;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  in_effect_[key] = buf;
+  return v;
 }
 
 std::string YamlFields::text(const std::string& key) const {
   const YAML::Node node = find(key);
   if (!node.IsScalar()) throw DataError(path_, lineOf(node), "'" + key + "' must be a string");
-  return node.as<std::string>();
+  return in_effect_[key] = node.as<std::string>();
 }
 
 std::string YamlFields::textOr(const std::string& key, const std::string& fallback) const {
-  return has(key) ? text(key) : fallback;
+  return has(key) ? text(key) : in_effect_[key] = fallback;
 }
 
 std::vector<std::string> YamlFields::textList(const std::string& key, bool allow_empty) const {

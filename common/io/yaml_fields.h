@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Core>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -37,6 +38,10 @@ class YamlFields {
 
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 
+  /// Every key read through numberOr / textOr / text with the value in effect, the file's or the
+  /// default (for the run's record of its options).
+  const std::map<std::string, std::string>& inEffect() const { return in_effect_; }
+
   /// Throws DataError at the first key of the file that no reader has asked for (a misspelling
   /// or a key of another version), naming the line, the key and the nearest known key. Keys under
   /// `other_sections` (top-level names) belong to other readers and are not checked.
@@ -49,6 +54,7 @@ class YamlFields {
   std::string path_;
   YAML::Node root_;
   mutable std::set<std::string> asked_;  // every key looked up, present or not
+  mutable std::map<std::string, std::string> in_effect_;
 };
 
 }  // namespace giocal

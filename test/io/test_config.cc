@@ -39,5 +39,19 @@ TEST(GiocalConfig, AMisspelledKeyNamesTheFileLineKeyAndTheNearestValidOne) {
   EXPECT_EQ(errorOf(r), r + ":1: unknown key 'nonsense_section' (not a giocal option)");
 }
 
+// The record of the options in effect (summary.json "options"): the file's values and every
+// default, each under its dotted key, the same set with or without a file.
+TEST(GiocalConfig, RecordsEveryOptionInEffectDefaultsIncluded) {
+  test::TempDir dir;
+  const GiocalConfig c = readGiocalConfig(dir.write("c.yaml", "fgo:\n  window: 12\n"));
+  const GiocalConfig d = readGiocalConfig("");
+  EXPECT_EQ(c.in_effect.at("fgo.window"), "12");
+  EXPECT_EQ(d.in_effect.at("fgo.window"), std::to_string(d.fgo.window));
+  EXPECT_EQ(c.in_effect.at("calibration.odometer_iterations"),
+            std::to_string(d.calibration.odometer_iterations));
+  EXPECT_GT(d.in_effect.size(), 40u);
+  EXPECT_EQ(c.in_effect.size(), d.in_effect.size());
+}
+
 }  // namespace
 }  // namespace giocal

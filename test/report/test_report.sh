@@ -69,6 +69,11 @@ for page, summaries in (("rep", ["cmp/ekf", "cmp/fgo"]), ("rep_dr", ["dr"])):
             assert got == value or math.isclose(got, value, rel_tol=1e-12), (run, key, got, value)
             checked += 1
 assert checked > 100, checked
+# The run's options in effect, defaults included (no --config was given).
+p = Cells()
+p.feed(open(f"{work}/rep/index.html").read())
+for key, value in (("options.fgo.window", 30), ("options.calibration.ambiguity_resolution", 1)):
+    assert key in p.tables[1] and float(p.tables[1][key]) == value, (key, p.tables[1].get(key))
 print(f"report tables: {checked} numbers equal summary.json's")
 PY
 
