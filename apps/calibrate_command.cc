@@ -7,6 +7,7 @@
 
 #include "apps/live_run_writer.h"
 #include "common/calibration/calibration_options.h"
+#include "common/calibration/fix_audit.h"
 #include "common/math/rotation.h"
 #include "replay/config.h"
 #include "replay/estimator_factory.h"
@@ -74,7 +75,11 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   const auto span = datasetTimeSpan(job.data);
   ProgressLine progress("calibrate " + job.estimator, span.first, span.second, job.quiet);
   LiveRunWriter writer(outputs, "", job.estimator, log, &progress);
-  const CalibrationRun run = replayFolder(job.data, replay, &writer);
+  // Where the dataset has a truth, each fixed epoch is checked against it as the run goes.
+  const std::unique_ptr<FixAudit> audit = fixAuditOf(job.data, &writer);
+  CalibrationRun run =
+      replayFolder(job.data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
+  if (audit) audit->addTo(run);
   progress.clear();
   const std::optional<TruthCalibration> truth = readFolderTruth(job.data);
   writer.finish(run, truth ? &truth->calib : nullptr);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "apps/live_run_writer.h"
+#include "common/calibration/fix_audit.h"
 #include "common/math/rotation.h"
 #include "replay/config.h"
 #include "replay/replay.h"
@@ -49,7 +50,9 @@ void runCompare(const CompareJob& job, std::ostream& log) {
     ProgressLine progress(std::string("compare ") + estimators[a], span.first, span.second,
                           job.quiet);
     LiveRunWriter writer(outputs, std::string(estimators[a]) + "/", estimators[a], log, &progress);
-    runs[a] = replayFolder(job.data, replay, &writer);
+    const std::unique_ptr<FixAudit> audit = fixAuditOf(job.data, &writer);
+    runs[a] = replayFolder(job.data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
+    if (audit) audit->addTo(runs[a]);
     progress.clear();
     writer.finish(runs[a], truth);
   }

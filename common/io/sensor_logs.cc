@@ -80,37 +80,47 @@ void writeOdomCsv(const std::string& path, const std::vector<OdomSample>& sample
   writeCsvTable(path, kOdomHeader, rows);
 }
 
-std::vector<TruthSample> readTruthCsv(const std::string& path, std::vector<std::string>* warnings) {
-  const ColumnRange vel{-500.0, 500.0}, unit{-1.0001, 1.0001};
-  const CsvTable table = readCsvTable(path, kTruthHeader,
-                                      {kTime,
-                                       {-90.0, 90.0},
-                                       {-180.0, 180.0},
-                                       {-1000.0, 100000.0},
-                                       vel,
-                                       vel,
-                                       vel,
-                                       unit,
-                                       unit,
-                                       unit,
-                                       unit});
-  if (warnings)
-    for (const auto& w : table.warnings) warnings->push_back(w);
-  std::vector<TruthSample> out(table.rows.size());
-  for (size_t i = 0; i < out.size(); ++i) {
-    const auto& r = table.rows[i];
-    TruthSample& s = out[i];
-    s.t = r[0];
-    s.lat_deg = r[1];
-    s.lon_deg = r[2];
-    s.h = r[3];
-    s.v_enu = {r[4], r[5], r[6]};
-    s.q_n_b = Eigen::Quaterniond(r[7], r[8], r[9], r[10]);
-    if (std::fabs(s.q_n_b.norm() - 1.0) > 1e-3) {
-      throw DataError(path, table.line_numbers[i], "quaternion qw,qx,qy,qz is not of unit norm");
-    }
-    s.q_n_b.normalize();
+namespace {
+const ColumnRange kVel{-500.0, 500.0}, kUnit{-1.0001, 1.0001};
+}  // namespace
+
+TruthLogReader::TruthLogReader(const std::string& path)
+    : rows_(path, kTruthHeader,
+            {kTime,
+             {-90.0, 90.0},
+             {-180.0, 180.0},
+             {-1000.0, 100000.0},
+             kVel,
+             kVel,
+             kVel,
+             kUnit,
+             kUnit,
+             kUnit,
+             kUnit}) {}
+
+bool TruthLogReader::next(TruthSample& s) {
+  if (!rows_.next(row_)) return false;
+  const auto& r = row_;
+  s.t = r[0];
+  s.lat_deg = r[1];
+  s.lon_deg = r[2];
+  s.h = r[3];
+  s.v_enu = {r[4], r[5], r[6]};
+  s.q_n_b = Eigen::Quaterniond(r[7], r[8], r[9], r[10]);
+  if (std::fabs(s.q_n_b.norm() - 1.0) > 1e-3) {
+    throw DataError(rows_.path(), rows_.line(), "quaternion qw,qx,qy,qz is not of unit norm");
   }
+  s.q_n_b.normalize();
+  return true;
+}
+
+std::vector<TruthSample> readTruthCsv(const std::string& path, std::vector<std::string>* warnings) {
+  TruthLogReader reader(path);
+  std::vector<TruthSample> out;
+  TruthSample s;
+  while (reader.next(s)) out.push_back(s);
+  if (warnings)
+    for (const auto& w : reader.warnings()) warnings->push_back(w);
   return out;
 }
 

@@ -46,6 +46,18 @@ class OdomLogReader {
   std::vector<double> row_;
 };
 
+/// truth.csv read sample by sample; quaternions must have unit norm within 1e-3 (normalized).
+class TruthLogReader {
+ public:
+  explicit TruthLogReader(const std::string& path);
+  bool next(TruthSample& s);
+  std::vector<std::string> warnings() const { return rows_.warnings(); }
+
+ private:
+  CsvRowReader rows_;
+  std::vector<double> row_;
+};
+
 /// With `warnings`, the recoverable damage dropped (CsvDamage) is appended to it.
 std::vector<ImuSample> readImuCsv(const std::string& path,
                                   std::vector<std::string>* warnings = nullptr);

@@ -106,6 +106,7 @@ class Calibrator {
   CalibrationOptions options_;
   DatasetDescription original_;  // as given: the prior the weak-direction check compares with
   DatasetDescription dataset_;   // with the prior in effect (re-initialization replaces it)
+  Eigen::Vector3d origin_e_ = Eigen::Vector3d::Zero();  // of the core's local frame n
   CoreFactory factory_;
   RunSink* sink_;
   CalibrationRun run_;

@@ -95,6 +95,7 @@ bool Calibrator::tryInitialize() {
                            {"b_g_z_deg_h", init->x.b_g.z() * kRadToDeg * 3600.0}};
   }
   core_ = factory_(buf_, *orbits_, *init);
+  origin_e_ = init->origin_e;
   init_cache_ = {};
   why_not_initialized_.clear();
   diverged_ = false;
@@ -186,11 +187,13 @@ void Calibrator::dispatchRover(const ObsEpoch& rover) {
   }
   if (sink_) {
     SkyView sky;
+    const LocalFrame frame(origin_e_);
+    const NavState& x = core_->nav();
     if (!positionsOnly()) {
-      const Eigen::Vector3d rx_e = LocalFrame(buf_.base_e).ecefFromEnu(core_->nav().p_n_b);
-      sky = skyView(rover, *orbits_, rx_e, options_.dd.elevation_mask_deg);
+      sky = skyView(rover, *orbits_, frame.ecefFromEnu(x.p_n_b), options_.dd.elevation_mask_deg);
     }
-    sink_->gnssEpoch({rover.t, sky.satellites, sky.pdop, out.used, out.fixed});
+    const Eigen::Vector3d antenna_e = frame.ecefFromEnu(x.p_n_b + x.q_n_b * dataset_.p_b_g);
+    sink_->gnssEpoch({rover.t, sky.satellites, sky.pdop, out.used, out.fixed, antenna_e});
   }
   if (out.recorded) onEstimate(out.estimate);
   core_->trajectoryUpTo(rover.t, [&](const TruthSample& s) {

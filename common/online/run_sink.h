@@ -3,6 +3,8 @@
 // (convergence, warnings) in words.
 #pragma once
 
+#include <Eigen/Core>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,8 @@ struct GnssEpochRecord {
   double pdop = 0.0;   // NaN with fewer than four
   bool used = false;   // counted as a GNSS epoch of the run
   bool fixed = false;  // validated ambiguity fixes held (LC: an RTK-fixed solution)
+  // The estimated antenna (ECEF) after the epoch's update: checked against a truth (FixAudit).
+  Eigen::Vector3d antenna_e = Eigen::Vector3d::Constant(NAN);
 };
 
 class RunSink {

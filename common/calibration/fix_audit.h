@@ -1,0 +1,47 @@
+// FixAudit: checks, while a run goes, each epoch held with ambiguity fixes against the dataset's
+// truth: a fix that puts the estimated antenna more than a threshold (horizontal) from the true
+// one is wrong.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "common/io/sensor_logs.h"
+#include "common/online/run_sink.h"
+
+namespace giocal {
+
+class FixAudit : public RunSink {
+ public:
+  /// Reads `truth_csv` (the IMU's true track) alongside the run, in constant memory; the true
+  /// antenna is at `p_b_g` from it. Everything the run hands over is passed on to `next`.
+  FixAudit(const std::string& truth_csv, const Eigen::Vector3d& p_b_g, RunSink* next,
+           double threshold_m = 0.05);
+
+  void estimate(const CalibrationEstimate& e) override { next_->estimate(e); }
+  void gnssEpoch(const GnssEpochRecord& g) override;
+  void trajectory(const TruthSample& s) override { next_->trajectory(s); }
+  void event(double t, const std::string& text) override { next_->event(t, text); }
+
+  /// Adds the tallies to the run's counters (fixes_checked_against_truth, wrong_fixes) and a
+  /// warning when a fix was wrong.
+  void addTo(CalibrationRun& run) const;
+
+ private:
+  std::optional<TruthSample> truthAt(double t);  // interpolated; empty beyond the truth's span
+
+  TruthLogReader truth_;
+  Eigen::Vector3d p_b_g_;
+  RunSink* next_;
+  double threshold_m_;
+  std::optional<TruthSample> before_, after_;  // the truth rows around the last time asked
+  bool truth_ended_ = false;
+  long checked_ = 0, wrong_ = 0;
+  double worst_m_ = 0.0, t_worst_ = 0.0;
+};
+
+/// A FixAudit of the dataset folder's truth.csv when it has one (else null), passing on to `next`.
+std::unique_ptr<FixAudit> fixAuditOf(const std::string& folder, RunSink* next);
+
+}  // namespace giocal
