@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "common/calibration/reference_trajectory.h"
 #include "common/geodesy/wgs84.h"
 #include "common/io/dataset_description.h"
 #include "common/math/rotation.h"
@@ -34,17 +35,10 @@ std::optional<TruthSample> FixAudit::truthAt(double t) {
     after_ = s;
   }
   if (after_ && after_->t == t) return after_;
-  // Bracketed by two rows less than a second apart: interpolated (slerp in attitude).
+  // Bracketed by two rows less than a second apart: interpolated.
   if (!before_ || !after_ || before_->t > t || after_->t < t || after_->t - before_->t > 1.0)
     return std::nullopt;
-  const double a = (t - before_->t) / (after_->t - before_->t);
-  TruthSample s = *before_;
-  s.t = t;
-  s.lat_deg += a * (after_->lat_deg - before_->lat_deg);
-  s.lon_deg += a * (after_->lon_deg - before_->lon_deg);
-  s.h += a * (after_->h - before_->h);
-  s.q_n_b = before_->q_n_b.slerp(a, after_->q_n_b);
-  return s;
+  return interpolateTruth(*before_, *after_, t);
 }
 
 void FixAudit::gnssEpoch(const GnssEpochRecord& g) {

@@ -20,6 +20,10 @@ std::optional<TruthSample> ReferenceTrajectory::at(double t, double max_gap) con
   const TruthSample& b = *hi;
   const TruthSample& a = *(hi - 1);
   if (b.t - a.t > max_gap) return std::nullopt;
+  return interpolateTruth(a, b, t);
+}
+
+TruthSample interpolateTruth(const TruthSample& a, const TruthSample& b, double t) {
   const double u = (t - a.t) / (b.t - a.t);
   TruthSample s;
   s.t = t;

@@ -26,6 +26,10 @@ class ReferenceTrajectory {
   std::vector<TruthSample> samples_;
 };
 
+/// The sample at t between rows a and b (a.t <= t <= b.t): linear in position and velocity, slerp
+/// in attitude.
+TruthSample interpolateTruth(const TruthSample& a, const TruthSample& b, double t);
+
 /// The state a truth.csv row describes, in the local frame n (position, velocity, attitude; biases
 /// zero): the inverse of truthRow (calibration_run.h).
 NavState navStateFromRow(const LocalFrame& frame, const TruthSample& s);
