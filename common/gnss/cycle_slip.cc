@@ -70,7 +70,11 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
           slip = true;
         }
         if (tr.has_mw && p.has_mw && std::abs(mw - p.mw) > options_.mw_threshold) slip = true;
-        if (!std::isnan(s->D) && !std::isnan(p.D)) {
+        // The trapezoidal Doppler prediction holds over a short gap only; over a longer one
+        // without the geometry-free test nothing can tell a slip, so it counts as one.
+        if (dt > options_.doppler_max_gap) {
+          if (!(dual && p.has_gf)) slip = true;
+        } else if (!std::isnan(s->D) && !std::isnan(p.D)) {
           doppler_misfit.push_back({key, (s->L - p.L) + 0.5 * (s->D + p.D) * dt});
         }
       }
@@ -86,6 +90,11 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
     for (const auto& m : doppler_misfit) {
       if (std::abs(m.second - median) > options_.doppler_threshold) slip_[m.first] = true;
     }
+  }
+  // Tracks of signals not seen this epoch are kept until max_gap, so that a signal blocked for a
+  // moment is tested against its last value instead of counting as new.
+  for (const auto& [key, tr] : tracks_) {
+    if (!next.count(key) && epoch.t - tr.t <= options_.max_gap) next[key] = tr;
   }
   tracks_ = std::move(next);
 }

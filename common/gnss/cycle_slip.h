@@ -16,6 +16,7 @@ struct CycleSlipOptions {
   double mw_threshold = 4.0;       // jump of Melbourne-Wuebbena [wide-lane cycles]
   double doppler_threshold = 5.0;  // phase change against Doppler, common part removed [cycles]
   double max_gap = 60.0;           // a longer gap in tracking counts as a slip [s]
+  double doppler_max_gap = 2.0;    // the Doppler test bridges gaps up to this long [s]
 };
 
 class CycleSlipDetector {

@@ -53,6 +53,40 @@ void RtkFilter::removeAmbiguity(const AmbKey& key) {
   amb_keys_.erase(amb_keys_.begin() + (i - 6));
 }
 
+bool RtkFilter::diverged(const std::vector<DdObservation>& rows, const Eigen::VectorXd& v,
+                         const Eigen::MatrixXd& S) const {
+  std::vector<double> z[2];
+  for (size_t a = 0; a < rows.size(); ++a) {
+    const long i = static_cast<long>(a);
+    z[rows[a].phase ? 1 : 0].push_back(std::abs(v[i]) / std::sqrt(S(i, i)));
+  }
+  const auto median_above = [&](std::vector<double>& x) {
+    std::nth_element(x.begin(), x.begin() + static_cast<long>(x.size() / 2), x.end());
+    return x[x.size() / 2] > options_.divergence_sigma;
+  };
+  return z[0].size() >= 4 && median_above(z[0]) && (z[1].empty() || median_above(z[1]));
+}
+
+bool RtkFilter::fixIsConsistent(const DdEpoch& ep,
+                                const std::vector<DdObservation>& obs,
+                                const std::vector<bool>& active, const Eigen::VectorXd& x_fix) const {
+  // A fix is kept only if the fixed solution fits every phase row of the epoch.
+  std::vector<DdObservation> phase;
+  for (size_t k = 0; k < obs.size(); ++k) {
+    if (active[k] && obs[k].phase) phase.push_back(obs[k]);
+  }
+  const Eigen::MatrixXd R = ddCovariance(phase, ep.undiff_variance);
+  for (size_t k = 0; k < phase.size(); ++k) {
+    const DdObservation& o = phase[k];
+    const double pred = ddPredict(o, ep.geometry, x_fix.head<3>(),
+                                  x_fix[ambiguityIndex({o.sat, o.band})],
+                                  x_fix[ambiguityIndex({o.ref, o.band})], nullptr);
+    const long i = static_cast<long>(k);
+    if (std::abs(o.value - pred) > options_.max_fix_residual * std::sqrt(R(i, i))) return false;
+  }
+  return true;
+}
+
 RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   RtkSolution sol;
   sol.t = rover.t;
@@ -76,6 +110,7 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
     P_.topLeftCorner<3, 3>() = Eigen::Matrix3d::Identity() * 100.0;
     P_.block<3, 3>(3, 3) = Eigen::Matrix3d::Identity() * 10.0;
     amb_keys_.clear();
+    last_seen_.clear();
     initialized_ = true;
   } else {
     const long n = x_.size();
@@ -90,28 +125,27 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
     P_.block<3, 3>(3, 3) += Eigen::Matrix3d::Identity() * q * dt;
     for (long k = 6; k < n; ++k)
       P_(k, k) += options_.ambiguity_noise * options_.ambiguity_noise * dt;
-    // A position far from the single point solution means the filter lost track: restart it.
-    if ((x_.head<3>() - spp.p_e).norm() > 30.0) {
-      x_.head<3>() = spp.p_e;
-      P_.topLeftCorner<3, 3>() = Eigen::Matrix3d::Identity() * 100.0;
-    }
   }
   t_last_ = rover.t;
 
-  // This epoch's double differences; slipped or new ambiguities (re)start from code, and those
-  // no longer observed are dropped.
+  // This epoch's double differences; slipped or new ambiguities (re)start from code. Those not
+  // observed are kept for max_outage: under trees a satellite blocked for an epoch or two comes
+  // back on the same ambiguity (the slip detector bridges the gap), and restarting it from code
+  // each time leaves too few converged ambiguities to fix.
   const DdEpoch ep = dd_builder_.build(rover, *base, x_.head<3>());
   const std::vector<SdGeometry>& geometry = ep.geometry;
   const std::vector<DdObservation>& obs = ep.obs;
-  std::map<AmbKey, bool> seen;
   for (const SdAmbiguity& a : ep.ambiguities) {
     const AmbKey key{a.sat, a.band};
     if (a.slipped) removeAmbiguity(key);
     if (ambiguityIndex(key) < 0) addAmbiguity(key, a.code_value, std::pow(10.0 / a.lambda, 2));
-    seen[key] = true;
+    last_seen_[key] = rover.t;
   }
   for (const AmbKey& k : std::vector<AmbKey>(amb_keys_)) {
-    if (!seen.count(k)) removeAmbiguity(k);
+    if (rover.t - last_seen_[k] > options_.max_outage) {
+      removeAmbiguity(k);
+      last_seen_.erase(k);
+    }
   }
   if (obs.empty()) return sol;
 
@@ -146,6 +180,17 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
       v[a] = o.value - pred;
     }
     const Eigen::MatrixXd S = H * P_ * H.transpose() + R;
+    // Lost track: the code rows as a whole far outside their predicted spread, and the phase rows
+    // too (a reference satellite's NLOS error shifts every code row, while the phase rows still
+    // agree). The filter starts again from the single point solution; comparing with that
+    // solution directly restarted it on every large NLOS error of the solution itself.
+    if (attempt == 0 && !restarting_ && diverged(used_obs, v, S)) {
+      initialized_ = false;
+      restarting_ = true;
+      const RtkSolution again = process(rover, base);
+      restarting_ = false;
+      return again;
+    }
     // Gate: the worst normalized innovation above the threshold is removed and the update redone.
     long worst = -1;
     double worst_z = options_.innovation_gate;
@@ -225,8 +270,11 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   const Eigen::MatrixXd Qf = Af * P_ * Af.transpose();
   const Eigen::MatrixXd PAt = P_ * Af.transpose();
   const Eigen::LDLT<Eigen::MatrixXd> qf(Qf);
-  const Eigen::VectorXd x_fix = x_ - PAt * qf.solve(Af * x_ - fix.values);
+  const Eigen::VectorXd d = Af * x_ - fix.values;
+  const Eigen::VectorXd x_fix = x_ - PAt * qf.solve(d);
   const Eigen::MatrixXd P_fix = P_ - PAt * qf.solve(PAt.transpose());
+  if (!fixIsConsistent(ep, obs, active, x_fix))
+    return sol;
   sol.quality = 1;
   sol.p_e = x_fix.head<3>();
   sol.cov_e = P_fix.topLeftCorner<3, 3>();

@@ -27,6 +27,9 @@ struct RtkOptions {
   bool fix_and_hold = false;
   double hold_sigma_cycles = 1e-3;
   double max_base_offset = 0.5;  // largest rover-base time-tag difference [s]
+  double divergence_sigma = 10.0;  // median DD code innovation this many sigma off: restart
+  double max_outage = 5.0;  // an ambiguity not observed for longer is dropped [s]
+  double max_fix_residual = 4.0;  // every fixed-solution DD phase residual within this many sigma
 };
 
 struct RtkSolution {
@@ -52,16 +55,23 @@ class RtkFilter {
   int ambiguityIndex(const AmbKey& key) const;
   void addAmbiguity(const AmbKey& key, double value, double variance);
   void removeAmbiguity(const AmbKey& key);
+  bool diverged(const std::vector<DdObservation>& rows, const Eigen::VectorXd& v,
+                const Eigen::MatrixXd& S) const;
+  bool fixIsConsistent(const DdEpoch& ep,
+                       const std::vector<DdObservation>& obs, const std::vector<bool>& active,
+                       const Eigen::VectorXd& x_fix) const;
 
   const BroadcastOrbits& orbits_;
   Eigen::Vector3d base_e_;
   RtkOptions options_;
   DdEpochBuilder dd_builder_;
   bool initialized_ = false;
+  bool restarting_ = false;
   double t_last_ = 0.0;
   Eigen::VectorXd x_;  // [p (3), v (3), N...]
   Eigen::MatrixXd P_;
   std::vector<AmbKey> amb_keys_;  // state order of the ambiguities
+  std::map<AmbKey, double> last_seen_;  // rover time each ambiguity was last observed
 };
 
 }  // namespace giocal

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -63,6 +64,53 @@ TEST(CycleSlip, FewFalseAlarmsOnRealDataAndInjectedSlipsAreFound) {
   EXPECT_NE(std::find(slips_l2.begin(), slips_l2.end(), 200u), slips_l2.end());
   EXPECT_EQ(std::find(slips_l1.begin(), slips_l1.end(), 151u), slips_l1.end()) << "only once";
   EXPECT_LE(slips_l1.size(), 4u);
+}
+
+void removeSatellite(ObsEpoch& e, const SatId& sat) {
+  e.sats.erase(std::remove_if(e.sats.begin(), e.sats.end(),
+                              [&](const SatObs& s) { return s.sat == sat; }),
+               e.sats.end());
+}
+
+void removeBand(ObsEpoch& e, char band) {
+  for (auto& s : e.sats) {
+    s.signals.erase(std::remove_if(s.signals.begin(), s.signals.end(),
+                                   [&](const SignalObs& o) { return o.band == band; }),
+                    s.signals.end());
+  }
+}
+
+// A satellite blocked for a few epochs (trees) comes back on the same ambiguity: it is tested
+// against its last value instead of counting as new, and a slip during the gap is still found.
+TEST(CycleSlip, ASignalBlockedForAMomentIsTestedAcrossTheGap) {
+  ObsData d = readRinexObs(kMosaic + "rover.obs");
+  const SatId g{GnssSystem::kGps, 13};
+  ASSERT_GT(d.epochs[103].t - d.epochs[99].t, 3.5);
+  for (size_t k = 100; k < 103; ++k) removeSatellite(d.epochs[k], g);
+  for (size_t k = 200; k < 203; ++k) removeSatellite(d.epochs[k], g);
+  for (size_t k = 203; k < d.epochs.size(); ++k) signal(d.epochs[k], g, '1')->L += 1.0;
+  CycleSlipDetector det;
+  for (size_t k = 0; k <= 203; ++k) {
+    det.update(d.epochs[k]);
+    if (k == 103) {
+      EXPECT_FALSE(det.slipped(g, '1')) << "clean return after a 3-epoch gap";
+      EXPECT_FALSE(det.slipped(g, '2'));
+    }
+  }
+  EXPECT_TRUE(det.slipped(g, '1')) << "one cycle on L1 during the gap (geometry-free test)";
+
+  // Single frequency: no geometry-free test, so a gap longer than the Doppler test can bridge
+  // counts as a slip, and a short one is bridged by the Doppler test.
+  ObsData s = readRinexObs(kMosaic + "rover.obs");
+  for (auto& e : s.epochs) removeBand(e, '2');
+  removeSatellite(s.epochs[100], g);
+  for (size_t k = 200; k < 205; ++k) removeSatellite(s.epochs[k], g);
+  CycleSlipDetector single;
+  for (size_t k = 0; k <= 205; ++k) {
+    single.update(s.epochs[k]);
+    if (k == 101) EXPECT_FALSE(single.slipped(g, '1')) << "one missing epoch, Doppler bridges it";
+  }
+  EXPECT_TRUE(single.slipped(g, '1')) << "5 s without a geometry-free test";
 }
 
 TEST(RinexObs, EventFlagRecordsAreSkipped) {
