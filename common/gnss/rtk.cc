@@ -6,6 +6,7 @@
 #include <numeric>
 #include <set>
 
+#include "common/geodesy/wgs84.h"
 #include "common/gnss/double_difference.h"
 
 namespace giocal {
@@ -67,9 +68,9 @@ bool RtkFilter::diverged(const std::vector<DdObservation>& rows, const Eigen::Ve
   return z[0].size() >= 4 && median_above(z[0]) && (z[1].empty() || median_above(z[1]));
 }
 
-bool RtkFilter::fixIsConsistent(const DdEpoch& ep,
-                                const std::vector<DdObservation>& obs,
-                                const std::vector<bool>& active, const Eigen::VectorXd& x_fix) const {
+bool RtkFilter::fixIsConsistent(const DdEpoch& ep, const std::vector<DdObservation>& obs,
+                                const std::vector<bool>& active,
+                                const Eigen::VectorXd& x_fix) const {
   // A fix is kept only if the fixed solution fits every phase row of the epoch.
   std::vector<DdObservation> phase;
   for (size_t k = 0; k < obs.size(); ++k) {
@@ -78,9 +79,9 @@ bool RtkFilter::fixIsConsistent(const DdEpoch& ep,
   const Eigen::MatrixXd R = ddCovariance(phase, ep.undiff_variance);
   for (size_t k = 0; k < phase.size(); ++k) {
     const DdObservation& o = phase[k];
-    const double pred = ddPredict(o, ep.geometry, x_fix.head<3>(),
-                                  x_fix[ambiguityIndex({o.sat, o.band})],
-                                  x_fix[ambiguityIndex({o.ref, o.band})], nullptr);
+    const double pred =
+        ddPredict(o, ep.geometry, x_fix.head<3>(), x_fix[ambiguityIndex({o.sat, o.band})],
+                  x_fix[ambiguityIndex({o.ref, o.band})], nullptr);
     const long i = static_cast<long>(k);
     if (std::abs(o.value - pred) > options_.max_fix_residual * std::sqrt(R(i, i))) return false;
   }
@@ -273,11 +274,17 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   const Eigen::VectorXd d = Af * x_ - fix.values;
   const Eigen::VectorXd x_fix = x_ - PAt * qf.solve(d);
   const Eigen::MatrixXd P_fix = P_ - PAt * qf.solve(PAt.transpose());
-  if (!fixIsConsistent(ep, obs, active, x_fix))
-    return sol;
-  sol.quality = 1;
+  if (!fixIsConsistent(ep, obs, active, x_fix)) return sol;
   sol.p_e = x_fix.head<3>();
   sol.cov_e = P_fix.topLeftCorner<3, 3>();
+  // "Fixed" promises centimetres: a partial fix of too few ambiguities, under trees, can pass the
+  // ratio test and still leave the horizontal position decimetres uncertain (its covariance says
+  // so); it is reported as float, with the partially fixed position and that covariance.
+  const Geodetic g = geodeticFromEcef(sol.p_e);
+  const Eigen::Matrix3d R_e_n = rotationEcefFromEnu(g.lat, g.lon);
+  const Eigen::Matrix2d cov_h = (R_e_n.transpose() * sol.cov_e * R_e_n).topLeftCorner<2, 2>();
+  if (std::sqrt(cov_h.trace()) > options_.max_fix_sigma) return sol;
+  sol.quality = 1;
   if (options_.fix_and_hold) {
     const Eigen::MatrixXd R =
         Eigen::MatrixXd::Identity(nf, nf) * std::pow(options_.hold_sigma_cycles, 2);

@@ -26,9 +26,10 @@ struct RtkOptions {
   LambdaOptions lambda;
   bool fix_and_hold = false;
   double hold_sigma_cycles = 1e-3;
-  double max_base_offset = 0.5;  // largest rover-base time-tag difference [s]
+  double max_base_offset = 0.5;    // largest rover-base time-tag difference [s]
   double divergence_sigma = 10.0;  // median DD code innovation this many sigma off: restart
-  double max_outage = 5.0;  // an ambiguity not observed for longer is dropped [s]
+  double max_outage = 5.0;         // an ambiguity not observed for longer is dropped [s]
+  double max_fix_sigma = 0.02;  // a fix leaving a larger horizontal sigma is reported as float [m]
   double max_fix_residual = 4.0;  // every fixed-solution DD phase residual within this many sigma
 };
 
@@ -57,9 +58,8 @@ class RtkFilter {
   void removeAmbiguity(const AmbKey& key);
   bool diverged(const std::vector<DdObservation>& rows, const Eigen::VectorXd& v,
                 const Eigen::MatrixXd& S) const;
-  bool fixIsConsistent(const DdEpoch& ep,
-                       const std::vector<DdObservation>& obs, const std::vector<bool>& active,
-                       const Eigen::VectorXd& x_fix) const;
+  bool fixIsConsistent(const DdEpoch& ep, const std::vector<DdObservation>& obs,
+                       const std::vector<bool>& active, const Eigen::VectorXd& x_fix) const;
 
   const BroadcastOrbits& orbits_;
   Eigen::Vector3d base_e_;
@@ -70,7 +70,7 @@ class RtkFilter {
   double t_last_ = 0.0;
   Eigen::VectorXd x_;  // [p (3), v (3), N...]
   Eigen::MatrixXd P_;
-  std::vector<AmbKey> amb_keys_;  // state order of the ambiguities
+  std::vector<AmbKey> amb_keys_;        // state order of the ambiguities
   std::map<AmbKey, double> last_seen_;  // rover time each ambiguity was last observed
 };
 

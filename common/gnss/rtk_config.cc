@@ -35,6 +35,10 @@ RtkOptions readRtkOptions(const YamlFields& y) {
   o.lambda.min_fixed = static_cast<int>(y.numberOr(s + "min_fixed", o.lambda.min_fixed, 1, 100));
   o.fix_and_hold = y.numberOr(s + "fix_and_hold", o.fix_and_hold ? 1 : 0, 0, 1) != 0.0;
   o.hold_sigma_cycles = y.numberOr(s + "hold_sigma_cycles", o.hold_sigma_cycles, 1e-6, 1.0);
+  o.max_fix_sigma = y.numberOr(s + "max_fix_sigma", o.max_fix_sigma, 1e-4, 1e3);
+  o.max_fix_residual = y.numberOr(s + "max_fix_residual", o.max_fix_residual, 1.0, 100.0);
+  o.max_outage = y.numberOr(s + "max_outage", o.max_outage, 0.0, 600.0);
+  o.divergence_sigma = y.numberOr(s + "divergence_sigma", o.divergence_sigma, 1.0, 1e6);
   o.max_base_offset = y.numberOr(s + "max_base_offset", o.max_base_offset, 0.0, 60.0);
   return o;
 }

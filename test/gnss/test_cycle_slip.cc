@@ -67,9 +67,9 @@ TEST(CycleSlip, FewFalseAlarmsOnRealDataAndInjectedSlipsAreFound) {
 }
 
 void removeSatellite(ObsEpoch& e, const SatId& sat) {
-  e.sats.erase(std::remove_if(e.sats.begin(), e.sats.end(),
-                              [&](const SatObs& s) { return s.sat == sat; }),
-               e.sats.end());
+  e.sats.erase(
+      std::remove_if(e.sats.begin(), e.sats.end(), [&](const SatObs& s) { return s.sat == sat; }),
+      e.sats.end());
 }
 
 void removeBand(ObsEpoch& e, char band) {

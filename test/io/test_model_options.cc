@@ -41,7 +41,13 @@ TEST(RtkOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_EQ(shipped.fix_and_hold, d.fix_and_hold);
   EXPECT_DOUBLE_EQ(shipped.hold_sigma_cycles, d.hold_sigma_cycles);
   EXPECT_DOUBLE_EQ(shipped.max_base_offset, d.max_base_offset);
+  EXPECT_DOUBLE_EQ(shipped.max_outage, d.max_outage);
+  EXPECT_DOUBLE_EQ(shipped.divergence_sigma, d.divergence_sigma);
+  EXPECT_DOUBLE_EQ(shipped.max_fix_residual, d.max_fix_residual);
+  EXPECT_DOUBLE_EQ(shipped.max_fix_sigma, d.max_fix_sigma);
   test::TempDir dir;
+  EXPECT_DOUBLE_EQ(
+      readRtkOptions(dir.write("s.yaml", "rtk:\n  max_fix_sigma: 0.05\n")).max_fix_sigma, 0.05);
   EXPECT_EQ(readRtkOptions(dir.write("g.yaml", "rtk:\n  systems: G\n")).dd.systems,
             std::vector<GnssSystem>{GnssSystem::kGps});
   EXPECT_THROW(readRtkOptions(dir.write("r.yaml", "rtk:\n  systems: GR\n")), DataError);
