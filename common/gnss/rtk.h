@@ -27,7 +27,7 @@ struct RtkOptions {
   bool fix_and_hold = false;
   double hold_sigma_cycles = 1e-3;
   double max_base_offset = 0.5;    // largest rover-base time-tag difference [s]
-  double divergence_sigma = 10.0;  // median DD code innovation this many sigma off: restart
+  double divergence_sigma = 10.0;  // code and phase innovations (medians) this far off: restart
   double max_outage = 5.0;         // an ambiguity not observed for longer is dropped [s]
   double max_fix_sigma = 0.02;  // a fix leaving a larger horizontal sigma is reported as float [m]
   double max_fix_residual = 4.0;  // every fixed-solution DD phase residual within this many sigma
