@@ -8,6 +8,7 @@
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
 #include "common/gnss/spp.h"
+#include "common/math/median.h"
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/models/doppler_model.h"
@@ -20,12 +21,6 @@ std::string ambiguityName(const SatId& sat, char band) {
 }
 
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
 
 std::vector<std::string> modelNames(const MeasurementModel& m,
                                     const std::vector<std::string>& first) {

@@ -7,6 +7,7 @@
 
 #include "common/gnss/lambda.h"
 #include "common/imu/gyro_mean.h"
+#include "common/math/median.h"
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/doppler_model.h"
 #include "common/models/prior_model.h"
@@ -14,15 +15,6 @@
 #include "fgo/variable_names.h"
 
 namespace giocal {
-namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
-}  // namespace
 
 using fgo_var::kPbg;
 using fgo_var::tagged;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "common/math/median.h"
+
 namespace giocal {
 
 namespace {
@@ -85,10 +87,9 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
   if (doppler_misfit.size() >= 3) {
     std::vector<double> v;
     for (const auto& m : doppler_misfit) v.push_back(m.second);
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-    const double median = v[v.size() / 2];
+    const double common = median(v);
     for (const auto& m : doppler_misfit) {
-      if (std::abs(m.second - median) > options_.doppler_threshold) slip_[m.first] = true;
+      if (std::abs(m.second - common) > options_.doppler_threshold) slip_[m.first] = true;
     }
   }
   // Tracks of signals not seen this epoch are kept until max_gap, so that a signal blocked for a

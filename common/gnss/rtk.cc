@@ -8,6 +8,7 @@
 
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/double_difference.h"
+#include "common/math/median.h"
 
 namespace giocal {
 
@@ -61,11 +62,8 @@ bool RtkFilter::diverged(const std::vector<DdObservation>& rows, const Eigen::Ve
     const long i = static_cast<long>(a);
     z[rows[a].phase ? 1 : 0].push_back(std::abs(v[i]) / std::sqrt(S(i, i)));
   }
-  const auto median_above = [&](std::vector<double>& x) {
-    std::nth_element(x.begin(), x.begin() + static_cast<long>(x.size() / 2), x.end());
-    return x[x.size() / 2] > options_.divergence_sigma;
-  };
-  return z[0].size() >= 4 && median_above(z[0]) && (z[1].empty() || median_above(z[1]));
+  const double limit = options_.divergence_sigma;
+  return z[0].size() >= 4 && median(z[0]) > limit && (z[1].empty() || median(z[1]) > limit);
 }
 
 bool RtkFilter::fixIsConsistent(const DdEpoch& ep, const std::vector<DdObservation>& obs,
