@@ -7,6 +7,7 @@
 
 #include "apps/calibrate_command.h"
 #include "apps/check_command.h"
+#include "apps/command_line.h"
 #include "apps/compare_command.h"
 #include "apps/deadreckon_command.h"
 #include "apps/import_command.h"
@@ -47,16 +48,13 @@ const char* kUsage =
     "  giocal export    --trajectory <trajectory.csv> --tum <file.txt> [--origin x,y,z] "
     "[--overwrite]\n"
     "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
+    "  giocal <command> --help     the command's options, their defaults and an example\n"
+    "  giocal --version\n"
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
     "  terminal; --quiet turns that off)\n";
 
-/// Parses and checks a sub-command's options.
-po::variables_map parsed(int argc, char** argv, const po::options_description& opts) {
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, opts), vm);
-  po::notify(vm);
-  return vm;
-}
+const char* const kCommands[] = {"check",      "simulate", "rtk",    "calibrate", "compare",
+                                 "deadreckon", "import",   "export", "report"};
 
 /// The options every command that writes a run's outputs takes: config, out, overwrite, quiet.
 void addRunOutputOptions(po::options_description& opts, bool out_required) {
@@ -71,7 +69,11 @@ void addRunOutputOptions(po::options_description& opts, bool out_required) {
 int runCheckCommand(int argc, char** argv) {
   po::options_description opts("giocal check");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm =
+      giocal::parseCommand(argc, argv, opts,
+                           "giocal check: reads a dataset folder and says whether it can be "
+                           "calibrated (or which condition makes it unusable)",
+                           "giocal check --data data/sim/paper");
   giocal::runCheck(vm["data"].as<std::string>(), std::cout);
   std::cout << "ok\n";
   return 0;
@@ -82,7 +84,11 @@ int runSimulateCommand(int argc, char** argv) {
   opts.add_options()("config", po::value<std::string>()->required(), "simulator preset (YAML)")(
       "out", po::value<std::string>()->required(), "output dataset folder")(
       "seed", po::value<std::uint64_t>()->default_value(1), "random seed");
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal simulate: writes a simulated dataset (IMU, odometer, rover and base RINEX, truth) "
+      "from a preset",
+      "giocal simulate --config config/sim/paper.yaml --out /tmp/paper --seed 7");
   const giocal::InterruptWatch interrupts;
   giocal::runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
                       vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
@@ -98,7 +104,11 @@ int runRtkCommand(int argc, char** argv) {
       "config", po::value<std::string>(), "YAML configuration")(
       "out", po::value<std::string>()->required(), "solution file (.pos)")(
       "overwrite", "replace --out if it exists");
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal rtk: kinematic RTK positions of the rover antenna (LAMBDA ambiguity resolution) as "
+      "an RTKLIB-style .pos",
+      "giocal rtk --rover rover.obs --base base.obs --nav nav.rnx --out rover.pos");
   giocal::RtkJob job;
   job.rover = vm["rover"].as<std::string>();
   job.base = vm["base"].as<std::string>();
@@ -143,7 +153,11 @@ int runCalibrateCommand(int argc, char** argv) {
       "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo");
   addGnssOptions(opts);
   addRunOutputOptions(opts, true);
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal calibrate: calibrates s_v, s_w, p_b_m and q_b_m from a dataset, with the EKF or the "
+      "factor graph",
+      "giocal calibrate --data /tmp/paper --estimator fgo --out /tmp/paper-fgo");
   giocal::CalibrateJob job;
   job.data = vm["data"].as<std::string>();
   job.estimator = vm["estimator"].as<std::string>();
@@ -162,7 +176,11 @@ int runCompareCommand(int argc, char** argv) {
   po::options_description opts("giocal compare");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
   addRunOutputOptions(opts, false);
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm =
+      giocal::parseCommand(argc, argv, opts,
+                           "giocal compare: calibrates the same dataset with both estimators and "
+                           "prints them side by side",
+                           "giocal compare --data /tmp/paper --out /tmp/paper-compare");
   giocal::CompareJob job;
   job.data = vm["data"].as<std::string>();
   job.config = vm["config"].as<std::string>();
@@ -178,14 +196,17 @@ int runCompareCommand(int argc, char** argv) {
 int runImportCommand(int argc, char** argv) {
   po::options_description opts("giocal import");
   opts.add_options()("ubx", po::value<std::string>()->default_value(""), "u-blox UBX log")(
-      "bag", po::value<std::string>()->default_value(""), "ROS 1 bag")(
+      "bag", po::value<std::string>()->default_value(""), "ROS 1 bag, rosbag2 folder or .db3")(
       "imu-topic", po::value<std::string>()->default_value(""), "sensor_msgs/Imu topic")(
       "odom-topic", po::value<std::string>()->default_value(""),
       "nav_msgs/Odometry or geometry_msgs/TwistStamped topic")(
       "fix-topic", po::value<std::string>()->default_value(""), "sensor_msgs/NavSatFix topic")(
       "out", po::value<std::string>()->required(), "output folder")(
       "overwrite", "replace the outputs of an earlier import in --out");
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal import: a ROS 1 or ROS 2 bag, or a u-blox UBX log, to a dataset folder giocal reads",
+      "giocal import --bag test1.bag --out /tmp/husky");
   giocal::ImportJob job;
   job.ubx = vm["ubx"].as<std::string>();
   job.bag = vm["bag"].as<std::string>();
@@ -207,7 +228,11 @@ int runReportCommand(int argc, char** argv) {
       "data", po::value<std::string>()->default_value(""), "the dataset (for its truth)")(
       "out", po::value<std::string>()->required(), "output folder")(
       "overwrite", "replace an earlier report in --out");
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal report: an HTML page with figures from a calibrate, compare or deadreckon output "
+      "folder",
+      "giocal report --run /tmp/paper-compare --data /tmp/paper --out /tmp/paper-report");
   giocal::runReport({vm["run"].as<std::string>(), vm["data"].as<std::string>(),
                      vm["out"].as<std::string>(), vm.count("overwrite") > 0},
                     std::cout);
@@ -222,7 +247,10 @@ int runExportCommand(int argc, char** argv) {
       "origin", po::value<std::string>()->default_value(""),
       "ECEF x,y,z of the ENU origin [m] (default: the first position)")(
       "overwrite", "replace --tum if it exists");
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal export: a trajectory.csv (or truth.csv) as a TUM text trajectory for evo or ov_eval",
+      "giocal export --trajectory /tmp/paper-fgo/trajectory.csv --tum /tmp/paper-fgo.tum");
   const std::string out = vm["tum"].as<std::string>();
   if (std::filesystem::exists(out) && !vm.count("overwrite")) {
     throw std::runtime_error(out + " exists; give --overwrite to replace it");
@@ -252,7 +280,12 @@ int runDeadReckonCommand(int argc, char** argv) {
       "reference trajectory.csv, or a .pos file (default: the dataset's truth.csv)");
   addGnssOptions(opts);
   addRunOutputOptions(opts, true);
-  const po::variables_map vm = parsed(argc, argv, opts);
+  const po::variables_map vm =
+      giocal::parseCommand(argc, argv, opts,
+                           "giocal deadreckon: IMU + odometer dead reckoning through a GNSS outage "
+                           "with a given calibration, against a reference",
+                           "giocal deadreckon --data /tmp/field --calibration "
+                           "/tmp/field-ekf/summary.json --start 100 --duration 1000 --out /tmp/dr");
   giocal::DeadReckonJob job;
   job.data = vm["data"].as<std::string>();
   job.calibration = vm["calibration"].as<std::string>();
@@ -277,6 +310,10 @@ int main(int argc, char** argv) {
     std::cout << kUsage;
     return argc < 2 ? 2 : 0;
   }
+  if (std::string(argv[1]) == "--version") {
+    std::cout << "giocal " << GIOCAL_VERSION << "\n";
+    return 0;
+  }
   const std::string command = argv[1];
   try {
     if (command == "check") return runCheckCommand(argc - 1, argv + 1);
@@ -288,8 +325,14 @@ int main(int argc, char** argv) {
     if (command == "import") return runImportCommand(argc - 1, argv + 1);
     if (command == "export") return runExportCommand(argc - 1, argv + 1);
     if (command == "report") return runReportCommand(argc - 1, argv + 1);
-    std::cerr << "giocal: unknown command '" << command << "'\n" << kUsage;
+    const std::string near =
+        giocal::nearestName(command, {std::begin(kCommands), std::end(kCommands)});
+    std::cerr << "giocal: unknown command '" << command << "'"
+              << (near.empty() ? "" : "; did you mean '" + near + "'?") << "\n"
+              << kUsage;
     return 2;
+  } catch (const giocal::HelpShown&) {
+    return 0;
   } catch (const giocal::Interrupted& e) {
     std::cerr << "giocal " << command << ": " << e.what()
               << "; nothing written (earlier outputs, if any, are unchanged)\n";
