@@ -12,6 +12,7 @@
 #include "apps/deadreckon_command.h"
 #include "apps/import_command.h"
 #include "apps/interrupt_watch.h"
+#include "apps/observability_command.h"
 #include "apps/report_command.h"
 #include "apps/simulate_command.h"
 #include "common/geodesy/wgs84.h"
@@ -48,6 +49,8 @@ const char* kUsage =
     "  giocal export    --trajectory <trajectory.csv> --tum <file.txt> [--origin x,y,z] "
     "[--overwrite]\n"
     "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
+    "  giocal observability --data <dir> [--calibration truth|guess] [--pos <file.pos>]\n"
+    "                   [--window <s>] [--out <dir>]\n"
     "  giocal <command> --help     the command's options, their defaults and an example\n"
     "  giocal --version\n"
     "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
@@ -303,6 +306,37 @@ int runDeadReckonCommand(int argc, char** argv) {
   return 0;
 }
 
+int runObservabilityCommand(int argc, char** argv) {
+  po::options_description opts("giocal observability");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
+      "calibration", po::value<std::string>()->default_value(""),
+      "truth or guess: where the models are linearized (default: truth when the dataset has it)")(
+      "pos", po::value<std::string>()->default_value(""),
+      "an RTK solution of the drive, for a dataset without truth.csv")(
+      "window", po::value<double>()->default_value(30.0), "analysis window [s]")(
+      "position-sigma", po::value<double>()->default_value(0.01),
+      "sigma of the antenna positions made from truth.csv [m]")(
+      "config", po::value<std::string>()->default_value(""), "YAML configuration")(
+      "out", po::value<std::string>()->default_value(""), "folder for observability.json")(
+      "overwrite", "replace observability.json in --out");
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal observability: before calibrating, what a drive can calibrate: the expected sigma "
+      "of each parameter per window and in total, weak directions, and advice on the motion",
+      "giocal observability --data /tmp/paper --window 30");
+  giocal::ObservabilityCommandJob job;
+  job.data = vm["data"].as<std::string>();
+  job.calibration = vm["calibration"].as<std::string>();
+  job.positions = vm["pos"].as<std::string>();
+  job.window_s = vm["window"].as<double>();
+  job.position_sigma_m = vm["position-sigma"].as<double>();
+  job.config = vm["config"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") != 0;
+  giocal::runObservability(job, std::cout);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -325,6 +359,7 @@ int main(int argc, char** argv) {
     if (command == "import") return runImportCommand(argc - 1, argv + 1);
     if (command == "export") return runExportCommand(argc - 1, argv + 1);
     if (command == "report") return runReportCommand(argc - 1, argv + 1);
+    if (command == "observability") return runObservabilityCommand(argc - 1, argv + 1);
     const std::string near =
         giocal::nearestName(command, {std::begin(kCommands), std::end(kCommands)});
     std::cerr << "giocal: unknown command '" << command << "'"

@@ -1,0 +1,138 @@
+#include "apps/observability_command.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+
+#include "common/calibration/weak_directions.h"
+#include "common/io/output_set.h"
+#include "common/io/sensor_logs.h"
+#include "common/io/text.h"
+#include "replay/config.h"
+#include "replay/observability.h"
+
+namespace giocal {
+namespace {
+
+std::string motionText(const DriveMotion& m) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(0) << std::setw(6) << m.distance_m << " m  turns L "
+    << std::setw(4) << m.turned_left_deg << " R " << std::setw(4) << m.turned_right_deg
+    << " deg  dv " << std::setprecision(1) << std::setw(4) << m.speed_change_m_s << " m/s  still "
+    << std::setprecision(0) << std::setw(3) << m.still_s << " s";
+  return s.str();
+}
+
+nlohmann::ordered_json sigmaJson(const Eigen::Matrix<double, 8, 1>& s) {
+  nlohmann::ordered_json j;
+  for (int k = 0; k < 8; ++k) j[calibrationStateName(k)] = s[k];
+  return j;
+}
+
+}  // namespace
+
+void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
+  const std::string json = job.out.empty() ? "" : job.out + "/observability.json";
+  if (!json.empty() && std::filesystem::exists(json) && !job.overwrite) {
+    throw std::runtime_error(json + " exists; give --overwrite to replace it");
+  }
+  CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
+  ObservabilityJob oj;
+  oj.options = readGiocalConfig(job.config).calibration;
+  oj.window_s = job.window_s;
+  oj.position_sigma_m = job.position_sigma_m;
+  const std::string calibration =
+      !job.calibration.empty() ? job.calibration : (in.truth ? "truth" : "guess");
+  if (calibration == "truth") {
+    if (!in.truth)
+      throw std::runtime_error(job.data + " has no truth_calib.yaml: use --calibration guess");
+    oj.linearize_at = in.truth->calib;
+  } else if (calibration == "guess") {
+    oj.linearize_at = in.description.initial_calibration.mean;
+  } else {
+    throw std::runtime_error("--calibration must be truth or guess, not '" + calibration + "'");
+  }
+  std::string reference = "--pos " + job.positions + " (the filter's own estimate)";
+  if (job.positions.empty()) {
+    if (in.description.truth.empty()) {
+      throw std::runtime_error(job.data +
+                               " has no truth.csv: give --pos <file.pos> (an RTK solution of the "
+                               "drive, for example from giocal rtk)");
+    }
+    oj.reference = ReferenceTrajectory(readTruthCsv(in.description.pathOf(in.description.truth)));
+    std::vector<double> times;
+    for (const ObsEpoch& e : in.rover.epochs) times.push_back(e.t);
+    in.positions =
+        antennaPositionsAlong(*oj.reference, in.truth ? in.truth->p_b_g : in.description.p_b_g,
+                              times, job.position_sigma_m);
+    reference =
+        "truth.csv, antenna positions with " + fixedText(job.position_sigma_m, 3) + " m sigma";
+  }
+  const ObservabilityReport r = analyzeObservability(in, oj);
+
+  log << "giocal observability: " << job.data << "\n  motion from " << reference
+      << "; models linearized at the " << calibration << " calibration\n"
+      << "  window [s]    motion in it (odometer, uncalibrated)              expected 1-sigma at "
+         "its end:\n"
+      << std::string(70, ' ') << "s_v      s_w      x [m]  y [m]  z [m]  roll   pitch  yaw [deg]\n";
+  for (const ObservabilityWindow& w : r.windows) {
+    log << "  " << std::fixed << std::setprecision(0) << std::setw(5) << w.t0 << "-" << std::left
+        << std::setw(6) << w.t1 << std::right << "  " << motionText(w.motion) << "  ";
+    for (int k = 0; k < 8; ++k) {
+      log << std::setprecision(k < 2 ? 5 : (k < 5 ? 3 : 2)) << std::left << std::setw(k < 2 ? 9 : 7)
+          << w.sigma[k] << std::right;
+    }
+    log << "\n";
+  }
+  log << std::setprecision(4) << "  state            prior     expected   (unit)\n";
+  for (int k = 0; k < 8; ++k) {
+    if (k == 4) {
+      log << "  p_b_m.z          " << std::setw(8) << r.prior_sigma[4] << "  " << std::setw(8)
+          << r.p_b_m_z_sigma_free << "   m  "
+          << (r.p_b_m_z_observable ? "observable" : "UNOBSERVABLE (planar motion)")
+          << " (along the vehicle's vertical, were it estimated)\n";
+      continue;
+    }
+    log << "  " << std::left << std::setw(15) << calibrationStateName(k) << std::right << " "
+        << std::setw(8) << r.prior_sigma[k] << "  " << std::setw(8) << r.expected_sigma[k] << "  "
+        << calibrationStateUnit(k) << "\n";
+  }
+  log.unsetf(std::ios::fixed);
+  for (int k : r.weak) log << "  weakly observed: " << calibrationStateName(k) << "\n";
+  for (const std::string& c : r.couplings) log << "  coupled: " << c << "\n";
+  for (const std::string& a : r.advice) log << "  advice: " << a << "\n";
+
+  if (json.empty()) return;
+  nlohmann::ordered_json j;
+  j["data"] = job.data;
+  j["reference"] = reference;
+  j["linearized_at"] = calibration;
+  j["prior_sigma"] = sigmaJson(r.prior_sigma);
+  j["expected_sigma"] = sigmaJson(r.expected_sigma);
+  j["p_b_m_z"] = {{"sigma_if_estimated", r.p_b_m_z_sigma_free},
+                  {"observable", r.p_b_m_z_observable}};
+  std::vector<std::string> weak;
+  for (int k : r.weak) weak.push_back(calibrationStateName(k));
+  j["weak"] = weak;
+  j["couplings"] = r.couplings;
+  j["advice"] = r.advice;
+  for (const ObservabilityWindow& w : r.windows) {
+    j["windows"].push_back({{"t0", w.t0},
+                            {"t1", w.t1},
+                            {"distance_m", w.motion.distance_m},
+                            {"turned_left_deg", w.motion.turned_left_deg},
+                            {"turned_right_deg", w.motion.turned_right_deg},
+                            {"speed_change_m_s", w.motion.speed_change_m_s},
+                            {"still_s", w.motion.still_s},
+                            {"sigma", sigmaJson(w.sigma)},
+                            {"information_over_prior", sigmaJson(w.information)}});
+  }
+  OutputSet outputs(job.out);
+  outputs.open("observability.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+  outputs.commit();
+  log << "  -> " << json << "\n";
+}
+
+}  // namespace giocal

@@ -1,0 +1,20 @@
+// `giocal observability --data <dir> [--calibration truth|guess] [--pos <file.pos>]
+// [--window <s>] [--position-sigma <m>] [--config <yaml>] [--out <dir>] [--overwrite]`.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+namespace giocal {
+
+struct ObservabilityCommandJob {
+  std::string data, calibration, positions, config, out;  // calibration empty: truth, else guess
+  double window_s = 30.0, position_sigma_m = 0.01;
+  bool overwrite = false;
+};
+
+/// Analyzes what the dataset's drive can calibrate, prints it, and writes observability.json
+/// into job.out when given.
+void runObservability(const ObservabilityCommandJob& job, std::ostream& log);
+
+}  // namespace giocal
