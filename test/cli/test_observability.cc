@@ -1,0 +1,90 @@
+// `giocal observability`: on the flat paper preset p_b_m.z is named unobservable and the
+// extrinsic yaw weak, the rest informed; on a straight drive (no turns) the yaw-rate scale, the
+// lateral lever arm, pitch and yaw are named weak, with the advice to turn; and the numbers in the
+// printed table are those of observability.json.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include "temp_dir.h"
+
+namespace giocal {
+namespace {
+
+std::string run(const std::string& args) {
+  const std::string cmd = std::string(GIOCAL_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[512];
+  while (p && std::fgets(buf, sizeof(buf), p)) out += buf;
+  if (p) pclose(p);
+  return out;
+}
+
+nlohmann::json analyze(const test::TempDir& dir, const std::string& preset, std::string* log) {
+  const std::string data = dir.file("data");
+  run("simulate --config " + preset + " --out " + data + " --seed 12");
+  *log = run("observability --data " + data + " --out " + dir.file("obs"));
+  std::ifstream in(dir.file("obs/observability.json"));
+  EXPECT_TRUE(in.good()) << *log;
+  return nlohmann::json::parse(in);
+}
+
+bool names(const nlohmann::json& list, const std::string& what) {
+  for (const auto& x : list)
+    if (x.get<std::string>() == what) return true;
+  return false;
+}
+
+TEST(Observability, PaperPresetNamesPbmzUnobservableAndYawWeak) {
+  test::TempDir dir;
+  std::string log;
+  const nlohmann::json j =
+      analyze(dir, std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml", &log);
+  EXPECT_FALSE(j["p_b_m_z"]["observable"].get<bool>()) << log;
+  EXPECT_NE(log.find("UNOBSERVABLE (planar motion)"), std::string::npos) << log;
+  EXPECT_TRUE(names(j["weak"], "yaw of q_b_m")) << log;
+  for (const char* k : {"s_v", "s_w", "p_b_m.x", "p_b_m.y", "roll of q_b_m", "pitch of q_b_m"}) {
+    EXPECT_FALSE(names(j["weak"], k)) << k << "\n" << log;
+    EXPECT_LT(j["expected_sigma"][k].get<double>(), 0.2 * j["prior_sigma"][k].get<double>()) << k;
+  }
+  // The yaw rate scale is learnt in the circle, after the straight: the windows say when.
+  const auto& w = j["windows"];
+  ASSERT_GE(w.size(), 4u);
+  EXPECT_GT(w[0]["sigma"]["s_w"].get<double>(), 0.5 * j["prior_sigma"]["s_w"].get<double>());
+  EXPECT_GT(w[2]["turned_left_deg"].get<double>(), 200.0);
+  // The printed window table carries the JSON's numbers.
+  std::ostringstream row;
+  row << std::fixed;
+  row.precision(5);
+  row << w[1]["sigma"]["s_v"].get<double>();
+  EXPECT_NE(log.find(row.str()), std::string::npos) << row.str() << "\n" << log;
+}
+
+TEST(Observability, StraightDriveNamesWhatOnlyTurnsInform) {
+  test::TempDir dir;
+  std::ifstream in(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+  std::stringstream yaml;
+  yaml << in.rdbuf();
+  std::string straight = std::regex_replace(yaml.str(), std::regex("- \\{type: arc[^}]*\\}"),
+                                            "- {type: straight, duration: 106.0}");
+  straight = std::regex_replace(straight, std::regex("nav_file: \\.\\./\\.\\./"),
+                                "nav_file: " + std::string(GIOCAL_SOURCE_DIR) + "/");
+  ASSERT_EQ(straight.find("type: arc"), std::string::npos);
+  std::string log;
+  const nlohmann::json j = analyze(dir, dir.write("straight.yaml", straight), &log);
+  // p_b_m.x sits at the weak threshold on a straight (bench/observability_check.sh): not asserted.
+  for (const char* k : {"s_w", "p_b_m.y", "pitch of q_b_m", "yaw of q_b_m"}) {
+    EXPECT_TRUE(names(j["weak"], k)) << k << "\n" << log;
+  }
+  EXPECT_FALSE(names(j["weak"], "s_v")) << log;
+  EXPECT_NE(log.find("advice: s_w: turning"), std::string::npos) << log;
+}
+
+}  // namespace
+}  // namespace giocal
