@@ -86,20 +86,20 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
     }
     log << "\n";
   }
-  log << std::setprecision(4) << "  state            prior     expected   (unit)\n";
+  log.unsetf(std::ios::fixed);
+  log << std::setprecision(3) << "  state            prior       expected    (unit)\n";
   for (int k = 0; k < 8; ++k) {
     if (k == 4) {
-      log << "  p_b_m.z          " << std::setw(8) << r.prior_sigma[4] << "  " << std::setw(8)
+      log << "  p_b_m.z          " << std::setw(10) << r.prior_sigma[4] << "  " << std::setw(10)
           << r.p_b_m_z_sigma_free << "   m  "
           << (r.p_b_m_z_observable ? "observable" : "UNOBSERVABLE (planar motion)")
           << " (along the vehicle's vertical, were it estimated)\n";
       continue;
     }
     log << "  " << std::left << std::setw(15) << calibrationStateName(k) << std::right << " "
-        << std::setw(8) << r.prior_sigma[k] << "  " << std::setw(8) << r.expected_sigma[k] << "  "
+        << std::setw(10) << r.prior_sigma[k] << "  " << std::setw(10) << r.expected_sigma[k] << "  "
         << calibrationStateUnit(k) << "\n";
   }
-  log.unsetf(std::ios::fixed);
   for (int k : r.weak) log << "  weakly observed: " << calibrationStateName(k) << "\n";
   for (const std::string& c : r.couplings) log << "  coupled: " << c << "\n";
   for (const std::string& a : r.advice) log << "  advice: " << a << "\n";

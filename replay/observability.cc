@@ -146,26 +146,11 @@ std::vector<std::string> couplingsOf(const Pass& p, double threshold) {
   return out;
 }
 
-/// The motion that informs each state (the paper's observability analysis, in words).
-const char* motionFor(int k) {
-  static const char* const kMotion[8] = {
-      "s_v: distance at known speed; a longer straight, with changes of speed",
-      "s_w: turning; more turns, at a higher yaw rate",
-      "p_b_m.x: turns in both directions at varying yaw rate (the lever arm shows as w x p)",
-      "p_b_m.y: turns in both directions at varying yaw rate (the lever arm shows as w x p)",
-      "",  // p_b_m.z: said apart (planar motion)
-      "roll of q_b_m: turns (the IMU sees the turning axis tilted)",
-      "pitch of q_b_m: turns, and driving at speed (a pitch tilts forward speed into vertical)",
-      "yaw of q_b_m: accelerating and braking on straights and turns in both directions (they "
-      "split the extrinsic yaw from the IMU heading), stops (they pin the gyro bias), or a "
-      "better gyro"};
-  return kMotion[k];
-}
-
 std::vector<std::string> adviceFor(const ObservabilityReport& r) {
   std::vector<std::string> advice;
   for (int k : r.weak) {
-    if (*motionFor(k)) advice.push_back(motionFor(k));
+    if (*motionThatInforms(k))
+      advice.push_back(std::string(calibrationStateName(k)) + ": " + motionThatInforms(k));
   }
   if (!r.p_b_m_z_observable) {
     advice.push_back(

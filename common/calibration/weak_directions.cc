@@ -17,6 +17,22 @@ const std::array<const char*, 8> kUnit{"", "", " m", " m", " m", " deg", " deg",
 const char* calibrationStateName(int k) { return kName.at(static_cast<size_t>(k)); }
 const char* calibrationStateUnit(int k) { return kUnit.at(static_cast<size_t>(k)); }
 
+/// The motion that informs each state (the paper's observability analysis, in words).
+const char* motionThatInforms(int k) {
+  static const std::array<const char*, 8> kMotion = {
+      "distance at known speed; a longer straight, with changes of speed",
+      "turning; more turns, at a higher yaw rate",
+      "turns in both directions at varying yaw rate (the lever arm shows as w x p)",
+      "turns in both directions at varying yaw rate (the lever arm shows as w x p)",
+      "",  // p_b_m.z: said apart (planar motion)
+      "turns (the IMU sees the turning axis tilted)",
+      "turns, and driving at speed (a pitch tilts forward speed into vertical)",
+      "accelerating and braking on straights and turns in both directions (they "
+      "split the extrinsic yaw from the IMU heading), stops (they pin the gyro bias), or a "
+      "better gyro"};
+  return kMotion.at(static_cast<size_t>(k));
+}
+
 std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationPrior& prior,
                             double fraction) {
   // calibration.csv's order: s_v, s_w, p_b_m x, y, z [m], roll, pitch, yaw [deg].
@@ -38,14 +54,14 @@ std::vector<std::string> weakDirections(const CalibrationEstimate& final,
       CalibrationEstimate{0.0, prior.mean, priorCalibrationCovariance(prior)}.sigma();
   std::vector<std::string> out;
   for (const int k : weakStates(final, prior, fraction)) {
-    char buf[400];
+    char buf[600];
     std::snprintf(buf, sizeof buf,
                   "%s is weakly observed on this drive: 1-sigma %.3g%s against the prior's %.3g%s. "
                   "The estimate stays near the initial guess, and along such a direction the "
-                  "reported sigma has been measured too small (docs/results.md). More turning "
-                  "and acceleration, or a better gyro, help",
+                  "reported sigma has been measured too small (docs/results.md). What informs "
+                  "it: %s",
                   kName[static_cast<size_t>(k)], sd(k), kUnit[static_cast<size_t>(k)], sd0(k),
-                  kUnit[static_cast<size_t>(k)]);
+                  kUnit[static_cast<size_t>(k)], motionThatInforms(k));
     out.emplace_back(buf);
   }
   return out;

@@ -28,4 +28,8 @@ std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationP
 const char* calibrationStateName(int k);
 const char* calibrationStateUnit(int k);
 
+/// The motion that informs state k (the paper's observability analysis, in words); empty for
+/// p_b_m.z, which planar motion leaves unobservable.
+const char* motionThatInforms(int k);
+
 }  // namespace giocal

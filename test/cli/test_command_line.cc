@@ -26,7 +26,7 @@ Result run(const std::string& args) {
 
 TEST(CommandLine, EveryCommandHasHelpWithDefaultsAndAnExample) {
   for (const char* command : {"check", "simulate", "rtk", "calibrate", "compare", "deadreckon",
-                              "import", "export", "report"}) {
+                              "import", "export", "report", "observability"}) {
     const Result r = run(std::string(command) + " --help");
     EXPECT_EQ(r.code, 0) << command << ": " << r.out;
     EXPECT_EQ(r.out.rfind(std::string("giocal ") + command + ": ", 0), 0u) << r.out;
