@@ -61,8 +61,7 @@ TEST(CommandLine, AMisspelledOptionIsAnsweredWithTheNearestOne) {
 TEST(CommandLine, AMisspelledCommandIsAnsweredWithTheNearestOne) {
   const Result r = run("calibrat --data x");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.out.find("unknown command 'calibrat'; did you mean 'calibrate'?"),
-            std::string::npos)
+  EXPECT_NE(r.out.find("unknown command 'calibrat'; did you mean 'calibrate'?"), std::string::npos)
       << r.out;
 }
 
