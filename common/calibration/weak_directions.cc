@@ -20,16 +20,15 @@ const char* calibrationStateUnit(int k) { return kUnit.at(static_cast<size_t>(k)
 /// The motion that informs each state (the paper's observability analysis, in words).
 const char* motionThatInforms(int k) {
   static const std::array<const char*, 8> kMotion = {
-      "distance at known speed; a longer straight, with changes of speed",
-      "turning; more turns, at a higher yaw rate",
-      "turns in both directions at varying yaw rate (the lever arm shows as w x p)",
-      "turns in both directions at varying yaw rate (the lever arm shows as w x p)",
+      "distance at a known speed: a longer straight, with changes of speed",
+      "turning: more turns, at a higher yaw rate",
+      "turns in both directions at varying yaw rate, where the lever arm shows as w x p",
+      "turns in both directions at varying yaw rate, where the lever arm shows as w x p",
       "",  // p_b_m.z: said apart (planar motion)
-      "turns (the IMU sees the turning axis tilted)",
-      "turns, and driving at speed (a pitch tilts forward speed into vertical)",
-      "accelerating and braking on straights and turns in both directions (they "
-      "split the extrinsic yaw from the IMU heading), stops (they pin the gyro bias), or a "
-      "better gyro"};
+      "turns, where the IMU sees the turning axis tilted",
+      "turns, and driving at speed, which a pitch tilts into the vertical",
+      "accelerating and braking on straights, turns in both directions and stops, which split "
+      "the extrinsic yaw from the IMU heading; or a better gyro"};
   return kMotion.at(static_cast<size_t>(k));
 }
 

@@ -230,10 +230,12 @@ void Calibrator::onEstimate(const CalibrationEstimate& e) {
       if (convergence_.takesPart(k) && !convergence_.converged(k))
         open += std::string(open.empty() ? "" : ", ") + calibrationStateName(k);
     }
-    for (const int k : weakStates(e, original_.initial_calibration))
-      weak += std::string(weak.empty() ? "" : ", ") + calibrationStateName(k);
-    say(e.t, "not converged yet: " + open +
-                 (weak.empty() ? "" : "; still near the prior (needs more excitation): " + weak));
+    // Each with the motion that would inform it (as `giocal observability` advises).
+    for (const int k : weakStates(e, original_.initial_calibration)) {
+      weak += std::string("; still near the prior: ") + calibrationStateName(k) + " (needs " +
+              motionThatInforms(k) + ")";
+    }
+    say(e.t, "not converged yet: " + open + weak);
   }
 }
 

@@ -217,6 +217,9 @@ TEST(OnlineCalibrator, ReportsConvergenceAsItHappensAndInTheRun) {
   const auto open = event("not converged yet");
   ASSERT_NE(open, rec.events.end());
   EXPECT_NE(open->second.find("yaw of q_b_m"), std::string::npos) << open->second;
+  // ... with the motion still missing for it.
+  const auto missing = event("still near the prior: yaw of q_b_m (needs accelerating and braking");
+  EXPECT_NE(missing, rec.events.end());
 }
 
 TEST(OnlineCalibrator, UnknownEstimatorNamesTheValidOnes) {
