@@ -130,11 +130,32 @@ def dr_error_figure(err, out):
     plt.close(fig)
 
 
-def gnss_figure(skies, out):
-    """Satellites, PDOP and what became of each epoch (fixed, used, not used) over time."""
+def read_scenes(dataset):
+    """A simulated dataset's scenes.csv as (t_start, t_end, type) in GPS seconds, else []."""
+    path = os.path.join(dataset, "scenes.csv") if dataset else None
+    if not path or not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return [(float(r["t_start"]), float(r["t_end"]), r["type"]) for r in csv.DictReader(f)]
+
+
+SCENE_COLOURS = {"open_sky": "#ffffff", "few_trees": "#d9f0d3", "more_trees": "#a6dba0",
+                 "building": "#d0d0e0"}
+
+
+def gnss_figure(skies, out, scenes=()):
+    """Satellites, PDOP and what became of each epoch (fixed, used, not used) over time, with the
+    dataset's scenes shaded as in the paper's satellite figure."""
     fig, (a, b) = plt.subplots(2, 1, figsize=(11, 6), sharex=True)
+    t_first = skies[0][1]["t"][0]
+    for t_start, t_end, kind in scenes:
+        for ax in (a, b):
+            ax.axvspan(t_start - t_first, t_end - t_first, color=SCENE_COLOURS.get(kind, "#eeeeee"),
+                       alpha=0.6, lw=0)
+        a.text(0.5 * (t_start + t_end) - t_first, 0.3, kind.replace("_", " "), ha="center",
+               fontsize=8)
     for name, g in skies:
-        t0 = g["t"][0]
+        t0 = t_first  # one time axis for every run and the scenes
         t = [x - t0 for x in g["t"]]
         a.step(t, g["satellites"], where="post", label=f"{name}: satellites")
         b.plot(t, g["pdop"], label=f"{name}: PDOP")
@@ -147,8 +168,8 @@ def gnss_figure(skies, out):
                 a.plot(pick, [top] * len(pick), "|", color=colour, label=f"{name}: {what}")
     a.set_ylabel("satellites above the mask")
     a.set_ylim(bottom=0)
-    b.set_ylabel("PDOP")
-    b.set_ylim(bottom=0)
+    b.set_ylabel("PDOP (log scale)")
+    b.set_yscale("log")  # a few epochs with 3-4 satellites reach hundreds
     b.set_xlabel("time since the first GNSS epoch [s]")
     for ax in (a, b):
         ax.grid(True, alpha=0.3)
@@ -263,8 +284,10 @@ def main(argv):
                  if os.path.exists(os.path.join(d, "gnss.csv"))]
         skies = [(n, g) for n, g in skies if g.get("t")]
         if skies:
-            gnss_figure(skies, os.path.join(out, "gnss.png"))
-            figures.append(("gnss.png", "Satellites, fix status and PDOP"))
+            scenes = read_scenes(dataset)
+            gnss_figure(skies, os.path.join(out, "gnss.png"), scenes)
+            figures.append(("gnss.png", "Satellites, fix status and PDOP" + (
+                " (scenes shaded: " + ", ".join(k for _, _, k in scenes) + ")" if scenes else "")))
         tracks = [(n, read_csv(os.path.join(d, "trajectory.csv"))) for n, d in calibrate_dirs
                   if os.path.exists(os.path.join(d, "trajectory.csv"))]
         if os.path.exists(os.path.join(run, "error.csv")):  # deadreckon

@@ -1,12 +1,15 @@
 #include "sim/simulator.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <random>
 #include <stdexcept>
 
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs_writer.h"
+#include "common/io/atomic_file.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
 #include "sim/sensor_errors.h"
@@ -62,7 +65,7 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   const double t0 = parseGpsTime(config.start_time);
   const Eigen::Vector3d origin_e = ecefFromGeodetic(
       {config.origin_lat_deg * kDegToRad, config.origin_lon_deg * kDegToRad, config.origin_h});
-  SimulatedLogs out{LocalFrame(origin_e), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
+  SimulatedLogs out{LocalFrame(origin_e), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
   const LocalFrame& frame = out.frame;
   const Trajectory traj(MotionProfile(config.segments), config.terrain, Eigen::Vector3d::Zero(),
                         config.initial_heading_deg * kDegToRad);
@@ -134,6 +137,10 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
     std::mt19937_64 rng_gnss(seed * 4 + 4);
     out.gnss =
         simulateGnss(config.gnss, orbits, antenna, base_e, t0, t0 + traj.duration(), rng_gnss);
+    for (const SceneSpec& sc : config.gnss.scenes) {
+      const double end = std::min(sc.end, traj.duration());
+      if (end > sc.start) out.scenes.push_back({t0 + sc.start, t0 + end, sc.type});
+    }
     out.nav_file = config.gnss.nav_file;
     for (const ObsEpoch& e : out.gnss.rover) {
       Eigen::Vector3d p, v;
@@ -186,6 +193,14 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
   writeOdomCsv(d.pathOf(d.odom), logs.odom);
   writeTruthCsv(d.pathOf(d.truth), logs.truth);
   writeTruthCalibration(folder + "/truth_calib.yaml", logs.truth_calib);
+  if (!logs.scenes.empty()) {
+    AtomicFile scenes(folder + "/scenes.csv");
+    scenes.stream() << "t_start,t_end,type\n" << std::setprecision(15);
+    for (const SimulatedLogs::Scene& sc : logs.scenes) {
+      scenes.stream() << sc.t_start << "," << sc.t_end << "," << sc.type << "\n";
+    }
+    scenes.commit();
+  }
   if (!logs.gnss.rover.empty()) {
     RinexObsHeader h;
     for (const auto& [sat_sys, letter] : {std::pair<GnssSystem, char>{GnssSystem::kGps, 'G'},

@@ -28,6 +28,12 @@ struct SimulatedLogs {
   std::string nav_file;                           // copied into the dataset as nav.rnx
   std::vector<Eigen::Vector3d> antenna_e;         // true antenna ECEF at the rover epochs
   DatasetDescription description;                 // dataset.yaml content (folder left empty)
+  /// The rover's scenes in GPS time (scenes.csv), cut to the drive; empty without gnss.scenes.
+  struct Scene {
+    double t_start = 0.0, t_end = 0.0;
+    std::string type;
+  };
+  std::vector<Scene> scenes;
   TruthCalibration truth_calib;
 };
 
@@ -35,8 +41,8 @@ struct SimulatedLogs {
 /// realistic sensor errors. The same config and seed give identical logs.
 SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed);
 
-/// Writes imu.csv, odom.csv, truth.csv, dataset.yaml and truth_calib.yaml into `folder`
-/// (created if missing); each file is written atomically.
+/// Writes imu.csv, odom.csv, truth.csv, dataset.yaml, truth_calib.yaml and, with scenes,
+/// scenes.csv (t_start,t_end,type) into `folder` (created if missing); each file atomically.
 void writeDataset(const SimulatedLogs& logs, const std::string& folder);
 
 /// Parses "yyyy-mm-dd hh:mm:ss[.sss]" (GPST) into GPS seconds; throws std::invalid_argument.

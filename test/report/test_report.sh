@@ -14,7 +14,11 @@ fail() { echo "FAIL: $*"; exit 1; }
 "$giocal" compare --data "$work/data" --out "$work/cmp" --quiet > /dev/null
 "$giocal" deadreckon --data "$work/data" --calibration "$work/cmp/ekf/summary.json" --start 60 \
   --duration 80 --out "$work/dr" --quiet > /dev/null
+# Scenes as the simulator writes them for presets with gnss.scenes: shaded in the GNSS figure.
+awk -F, 'NR == 2 { printf "t_start,t_end,type\n%.3f,%.3f,open_sky\n%.3f,%.3f,more_trees\n", \
+  $1, $1 + 60, $1 + 60, $1 + 150 }' "$work/data/truth.csv" > "$work/data/scenes.csv"
 "$giocal" report --run "$work/cmp" --data "$work/data" --out "$work/rep" > /dev/null
+grep -q "scenes shaded: open_sky, more_trees" "$work/rep/index.html" || fail "scenes not named"
 "$giocal" report --run "$work/dr" --data "$work/data" --out "$work/rep_dr" > /dev/null
 
 for f in rep/convergence.png rep/nees.png rep/gnss.png rep/trajectory.png rep_dr/dr_error.png \

@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <string>
+
 #include "common/geodesy/wgs84.h"
 #include "sim/simulator.h"
+#include "temp_dir.h"
 
 namespace giocal {
 namespace {
@@ -39,6 +43,20 @@ TEST(Scenes, BlockageOutliersAndSlipsFollowTheSceneZones) {
   double base_sats = 0;
   for (const ObsEpoch& e : logs.gnss.base) base_sats += static_cast<double>(e.sats.size());
   EXPECT_NEAR(base_sats / static_cast<double>(logs.gnss.base.size()), sats[0], 1.5);
+  // The scenes in GPS time, cut to the drive (the last one is longer than it), for the report.
+  ASSERT_EQ(logs.scenes.size(), 3u);
+  const double t0 = logs.truth.front().t;
+  EXPECT_DOUBLE_EQ(logs.scenes[1].t_start, t0 + 50.0);
+  EXPECT_EQ(logs.scenes[2].type, "building");
+  EXPECT_NEAR(logs.scenes[2].t_end, logs.truth.back().t, 0.02);
+  test::TempDir dir;
+  sim::writeDataset(logs, dir.path());
+  std::ifstream csv(dir.file("scenes.csv"));
+  std::string header, first;
+  std::getline(csv, header);
+  std::getline(csv, first);
+  EXPECT_EQ(header, "t_start,t_end,type");
+  EXPECT_EQ(first.substr(first.rfind(',') + 1), "open_sky");
 }
 
 TEST(Scenes, UnknownSceneTypeIsRejected) {
