@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <iomanip>
 #include <random>
 #include <stdexcept>
 
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs_writer.h"
-#include "common/io/atomic_file.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
 #include "sim/sensor_errors.h"
@@ -193,14 +191,7 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
   writeOdomCsv(d.pathOf(d.odom), logs.odom);
   writeTruthCsv(d.pathOf(d.truth), logs.truth);
   writeTruthCalibration(folder + "/truth_calib.yaml", logs.truth_calib);
-  if (!logs.scenes.empty()) {
-    AtomicFile scenes(folder + "/scenes.csv");
-    scenes.stream() << "t_start,t_end,type\n" << std::setprecision(15);
-    for (const SimulatedLogs::Scene& sc : logs.scenes) {
-      scenes.stream() << sc.t_start << "," << sc.t_end << "," << sc.type << "\n";
-    }
-    scenes.commit();
-  }
+  if (!logs.scenes.empty()) writeScenesCsv(folder + "/scenes.csv", logs.scenes);
   if (!logs.gnss.rover.empty()) {
     RinexObsHeader h;
     for (const auto& [sat_sys, letter] : {std::pair<GnssSystem, char>{GnssSystem::kGps, 'G'},

@@ -10,6 +10,7 @@
 #include "common/imu/imu_sample.h"
 #include "common/imu/nav_state.h"
 #include "common/io/dataset_description.h"
+#include "common/io/scenes_csv.h"
 #include "common/io/sensor_logs.h"
 #include "common/odometer/odom_sample.h"
 #include "sim/gnss_simulator.h"
@@ -29,11 +30,7 @@ struct SimulatedLogs {
   std::vector<Eigen::Vector3d> antenna_e;         // true antenna ECEF at the rover epochs
   DatasetDescription description;                 // dataset.yaml content (folder left empty)
   /// The rover's scenes in GPS time (scenes.csv), cut to the drive; empty without gnss.scenes.
-  struct Scene {
-    double t_start = 0.0, t_end = 0.0;
-    std::string type;
-  };
-  std::vector<Scene> scenes;
+  std::vector<SceneSpan> scenes;
   TruthCalibration truth_calib;
 };
 

@@ -10,19 +10,13 @@
 
 namespace giocal {
 
-namespace {
-
-// The antenna of a truth row: its IMU origin plus the lever arm, through the local-level attitude.
-Eigen::Vector3d antennaOf(const TruthSample& s, const Eigen::Vector3d& p_b_g) {
-  const double lat = s.lat_deg * kDegToRad, lon = s.lon_deg * kDegToRad;
-  return ecefFromGeodetic({lat, lon, s.h}) + rotationEcefFromEnu(lat, lon) * (s.q_n_b * p_b_g);
-}
-
-}  // namespace
-
 FixAudit::FixAudit(const std::string& truth_csv, const Eigen::Vector3d& p_b_g, RunSink* next,
-                   double threshold_m)
-    : truth_(truth_csv), p_b_g_(p_b_g), next_(next), threshold_m_(threshold_m) {}
+                   double threshold_m, std::vector<SceneSpan> scenes)
+    : truth_(truth_csv),
+      p_b_g_(p_b_g),
+      next_(next),
+      threshold_m_(threshold_m),
+      scenes_(std::move(scenes)) {}
 
 std::optional<TruthSample> FixAudit::truthAt(double t) {
   while (!truth_ended_ && (!after_ || after_->t < t)) {
@@ -43,6 +37,11 @@ std::optional<TruthSample> FixAudit::truthAt(double t) {
 
 void FixAudit::gnssEpoch(const GnssEpochRecord& g) {
   next_->gnssEpoch(g);
+  SceneTally* scene = nullptr;
+  if (const std::string type = sceneAt(scenes_, g.t); !type.empty()) {
+    scene = &by_scene_[type];
+    if (g.used) ++scene->epochs;
+  }
   if (!g.fixed || !g.antenna_e.allFinite()) return;
   const std::optional<TruthSample> truth = truthAt(g.t);
   if (!truth) return;
@@ -51,10 +50,14 @@ void FixAudit::gnssEpoch(const GnssEpochRecord& g) {
   // simulated paper preset, in giocal rtk and the calibrators alike).
   const double lat = truth->lat_deg * kDegToRad, lon = truth->lon_deg * kDegToRad;
   const Eigen::Vector3d d_enu =
-      rotationEcefFromEnu(lat, lon).transpose() * (g.antenna_e - antennaOf(*truth, p_b_g_));
+      rotationEcefFromEnu(lat, lon).transpose() * (g.antenna_e - antennaOfRow(*truth, p_b_g_));
   const double d = d_enu.head<2>().norm();
   ++checked_;
   if (d > threshold_m_) ++wrong_;
+  if (scene) {
+    ++scene->fixed;
+    if (d > threshold_m_) ++scene->wrong;
+  }
   if (d > worst_m_) {
     worst_m_ = d;
     t_worst_ = g.t;
@@ -64,6 +67,11 @@ void FixAudit::gnssEpoch(const GnssEpochRecord& g) {
 void FixAudit::addTo(CalibrationRun& run) const {
   run.counters["fixes_checked_against_truth"] = checked_;
   run.counters["wrong_fixes"] = wrong_;
+  for (const auto& [type, n] : by_scene_) {
+    run.counters["scene." + type + ".gnss_epochs"] = n.epochs;
+    run.counters["scene." + type + ".fixed_epochs"] = n.fixed;
+    run.counters["scene." + type + ".wrong_fixes"] = n.wrong;
+  }
   if (wrong_ == 0) return;
   char text[200];
   std::snprintf(
@@ -77,7 +85,10 @@ void FixAudit::addTo(CalibrationRun& run) const {
 std::unique_ptr<FixAudit> fixAuditOf(const std::string& folder, RunSink* next) {
   const DatasetDescription d = readDatasetDescription(folder);
   if (d.truth.empty() || !std::filesystem::exists(d.pathOf(d.truth))) return nullptr;
-  return std::make_unique<FixAudit>(d.pathOf(d.truth), d.p_b_g, next);
+  const std::string scenes = folder + "/scenes.csv";
+  return std::make_unique<FixAudit>(
+      d.pathOf(d.truth), d.p_b_g, next, 0.05,
+      std::filesystem::exists(scenes) ? readScenesCsv(scenes) : std::vector<SceneSpan>{});
 }
 
 }  // namespace giocal

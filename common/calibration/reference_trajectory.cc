@@ -47,4 +47,9 @@ NavState navStateFromRow(const LocalFrame& frame, const TruthSample& s) {
   return x;
 }
 
+Eigen::Vector3d antennaOfRow(const TruthSample& s, const Eigen::Vector3d& p_b_g) {
+  const double lat = s.lat_deg * kDegToRad, lon = s.lon_deg * kDegToRad;
+  return ecefFromGeodetic({lat, lon, s.h}) + rotationEcefFromEnu(lat, lon) * (s.q_n_b * p_b_g);
+}
+
 }  // namespace giocal

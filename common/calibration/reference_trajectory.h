@@ -30,6 +30,10 @@ class ReferenceTrajectory {
 /// in attitude.
 TruthSample interpolateTruth(const TruthSample& a, const TruthSample& b, double t);
 
+/// The antenna (ECEF) of a truth.csv row: its IMU origin plus the lever arm p_b_g through the
+/// row's local-level attitude.
+Eigen::Vector3d antennaOfRow(const TruthSample& s, const Eigen::Vector3d& p_b_g);
+
 /// The state a truth.csv row describes, in the local frame n (position, velocity, attitude; biases
 /// zero): the inverse of truthRow (calibration_run.h).
 NavState navStateFromRow(const LocalFrame& frame, const TruthSample& s);

@@ -2,6 +2,8 @@
 
 #include "common/calibration/fix_audit.h"
 #include "common/geodesy/wgs84.h"
+#include "common/io/data_error.h"
+#include "common/io/scenes_csv.h"
 #include "common/io/sensor_logs.h"
 #include "common/math/rotation.h"
 #include "temp_dir.h"
@@ -34,8 +36,11 @@ TEST(FixAudit, CountsFixedEpochsWhoseAntennaIsFarFromTheTruthHorizontally) {
                            rotationEcefFromEnu(lat, lon) * off_enu);
   };
   RunRecording next;
-  FixAudit audit(path, p_b_g, &next);
+  // Two scenes: the first two epochs in open sky, the third under trees, the last in none.
+  FixAudit audit(path, p_b_g, &next, 0.05,
+                 {{1000.0, 1001.5, "open_sky"}, {1001.5, 1010.0, "more_trees"}});
   GnssEpochRecord g;
+  g.used = true;
   g.fixed = true;
   g.t = 1001.05;  // between truth rows: interpolated
   g.antenna_e = antennaAt(g.t, {0.01, 0.0, 0.08});
@@ -54,10 +59,35 @@ TEST(FixAudit, CountsFixedEpochsWhoseAntennaIsFarFromTheTruthHorizontally) {
   audit.addTo(run);
   EXPECT_EQ(run.counters.at("fixes_checked_against_truth"), 2);
   EXPECT_EQ(run.counters.at("wrong_fixes"), 1);
+  EXPECT_EQ(run.counters.at("scene.open_sky.gnss_epochs"), 1);
+  EXPECT_EQ(run.counters.at("scene.open_sky.fixed_epochs"), 1);
+  EXPECT_EQ(run.counters.at("scene.open_sky.wrong_fixes"), 0);
+  EXPECT_EQ(run.counters.at("scene.more_trees.gnss_epochs"), 2);
+  EXPECT_EQ(run.counters.at("scene.more_trees.fixed_epochs"), 1);
+  EXPECT_EQ(run.counters.at("scene.more_trees.wrong_fixes"), 1);
   ASSERT_EQ(run.warnings.size(), 1u);
   EXPECT_NE(run.warnings[0].find("1 of 2 fixed epochs"), std::string::npos) << run.warnings[0];
-  EXPECT_NE(run.warnings[0].find("worst 0.10 m at t=1002.0"), std::string::npos)
-      << run.warnings[0];
+  EXPECT_NE(run.warnings[0].find("worst 0.10 m at t=1002.0"), std::string::npos) << run.warnings[0];
+}
+
+TEST(ScenesCsv, RoundTripAndBadRowsNamed) {
+  test::TempDir dir;
+  const std::string path = dir.file("scenes.csv");
+  writeScenesCsv(path, {{1e9, 1e9 + 320.5, "open_sky"}, {1e9 + 320.5, 1e9 + 600, "building"}});
+  const std::vector<SceneSpan> back = readScenesCsv(path);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_DOUBLE_EQ(back[0].t_end, 1e9 + 320.5);
+  EXPECT_EQ(sceneAt(back, 1e9 + 400), "building");
+  EXPECT_EQ(sceneAt(back, 1e9 + 600), "");
+  dir.write("bad.csv", "t_start,t_end,type\n5,4,open_sky\n");
+  try {
+    readScenesCsv(dir.file("bad.csv"));
+    FAIL() << "no error";
+  } catch (const DataError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.csv:2"), std::string::npos) << e.what();
+  }
+  dir.write("bad2.csv", "t_start,t_end,type\n5x,6,open_sky\n");
+  EXPECT_THROW(readScenesCsv(dir.file("bad2.csv")), DataError);
 }
 
 }  // namespace
