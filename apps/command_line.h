@@ -23,6 +23,6 @@ boost::program_options::variables_map parseCommand(
 
 /// The candidate closest to `word` in edit distance, if it is close enough to be a likely
 /// misspelling (at most a third of its length, at least 1 edit, at most 3); else empty.
-std::string nearestName(const std::string& word, const std::vector<std::string>& candidates);
+std::string likelyMeant(const std::string& word, const std::vector<std::string>& candidates);
 
 }  // namespace giocal

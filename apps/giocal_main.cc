@@ -361,7 +361,7 @@ int main(int argc, char** argv) {
     if (command == "report") return runReportCommand(argc - 1, argv + 1);
     if (command == "observability") return runObservabilityCommand(argc - 1, argv + 1);
     const std::string near =
-        giocal::nearestName(command, {std::begin(kCommands), std::end(kCommands)});
+        giocal::likelyMeant(command, {std::begin(kCommands), std::end(kCommands)});
     std::cerr << "giocal: unknown command '" << command << "'"
               << (near.empty() ? "" : "; did you mean '" + near + "'?") << "\n"
               << kUsage;

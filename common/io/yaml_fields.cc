@@ -8,24 +8,11 @@
 #include <sstream>
 
 #include "common/io/data_error.h"
+#include "common/io/nearest_name.h"
 
 namespace giocal {
 
 namespace {
-size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diag = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
 
 /// Dotted keys of the leaves (scalars and lists) under `node`, with their nodes.
 void leaves(const std::string& path, const YAML::Node& node, const std::string& prefix,
@@ -219,15 +206,9 @@ void YamlFields::rejectUnknownKeys(const std::vector<std::string>& other_section
     const std::string section = key.substr(0, key.find('.'));
     if (std::find(other_sections.begin(), other_sections.end(), section) != other_sections.end())
       continue;
-    std::string nearest;
-    size_t best = 4;  // suggest only close spellings
-    for (const std::string& known : asked_) {
-      const size_t d = editDistance(key, known);
-      if (d < best) {
-        best = d;
-        nearest = known;
-      }
-    }
+    // Suggest only close spellings.
+    const std::string nearest =
+        nearestName(key, std::vector<std::string>(asked_.begin(), asked_.end()), 3);
     throw DataError(path_, lineOf(node),
                     "unknown key '" + key + "'" +
                         (nearest.empty() ? std::string(" (not a giocal option)")
