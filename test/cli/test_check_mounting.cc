@@ -8,20 +8,13 @@
 #include <sstream>
 #include <string>
 
+#include "run_giocal.h"
 #include "temp_dir.h"
 
 namespace giocal {
 namespace {
 
-std::string run(const std::string& args) {
-  const std::string cmd = std::string(GIOCAL_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[512];
-  while (p && std::fgets(buf, sizeof(buf), p)) out += buf;
-  if (p) pclose(p);
-  return out;
-}
+std::string run(const std::string& args) { return test::runGiocal(args).out; }
 
 TEST(CheckMounting, AGuessFarFromTheDriveIsNamed) {
   test::TempDir dir;

@@ -6,23 +6,13 @@
 #include <cstdio>
 #include <string>
 
+#include "run_giocal.h"
+
 namespace giocal {
 namespace {
 
-struct Result {
-  std::string out;
-  int code = -1;
-};
-
-Result run(const std::string& args) {
-  const std::string cmd = std::string(GIOCAL_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  Result r;
-  char buf[512];
-  while (p && std::fgets(buf, sizeof(buf), p)) r.out += buf;
-  if (p) r.code = WEXITSTATUS(pclose(p));
-  return r;
-}
+using Result = test::GiocalResult;
+const auto run = test::runGiocal;
 
 TEST(CommandLine, EveryCommandHasHelpWithDefaultsAndAnExample) {
   for (const char* command : {"check", "simulate", "rtk", "calibrate", "compare", "deadreckon",

@@ -9,17 +9,16 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "run_giocal.h"
 #include "temp_dir.h"
 
 namespace giocal {
 namespace {
 
 int run(const std::string& args, std::string* out) {
-  const std::string cmd = std::string(GIOCAL_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[512];
-  while (p && std::fgets(buf, sizeof(buf), p)) *out += buf;
-  return p ? pclose(p) : -1;
+  const test::GiocalResult r = test::runGiocal(args);
+  *out += r.out;
+  return r.code;
 }
 
 nlohmann::json summary(const std::string& dir) {

@@ -1,0 +1,26 @@
+// runGiocal: the giocal binary run with arguments, its standard output and error together.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <string>
+
+namespace giocal::test {
+
+struct GiocalResult {
+  std::string out;  // standard output and error
+  int code = -1;    // exit status
+};
+
+inline GiocalResult runGiocal(const std::string& args) {
+  const std::string cmd = std::string(GIOCAL_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  GiocalResult r;
+  char buf[512];
+  while (p && std::fgets(buf, sizeof(buf), p)) r.out += buf;
+  if (p) r.code = WEXITSTATUS(pclose(p));
+  return r;
+}
+
+}  // namespace giocal::test
