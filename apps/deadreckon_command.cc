@@ -6,10 +6,10 @@
 #include <ostream>
 #include <stdexcept>
 
-#include "apps/progress_line.h"
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/pos_reader.h"
 #include "common/io/output_set.h"
+#include "common/io/progress_line.h"
 #include "common/math/rotation.h"
 #include "replay/calibration_source.h"
 #include "replay/config.h"

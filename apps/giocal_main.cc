@@ -43,9 +43,9 @@ const char* kUsage =
     "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv|file.pos>] "
     "[--config <yaml>]\n"
     "                   --out <dir> [--overwrite] [--quiet]\n"
-    "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite]\n"
+    "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite] [--quiet]\n"
     "  giocal import    --bag <file.bag> [--imu-topic t] [--odom-topic t] [--fix-topic t]\n"
-    "                   --out <dir> [--overwrite]\n"
+    "                   --out <dir> [--overwrite] [--quiet]\n"
     "  giocal export    --trajectory <trajectory.csv> --tum <file.txt> [--origin x,y,z] "
     "[--overwrite]\n"
     "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
@@ -53,7 +53,8 @@ const char* kUsage =
     "                   [--window <s>] [--out <dir>]\n"
     "  giocal <command> --help     the command's options, their defaults and an example\n"
     "  giocal --version\n"
-    "  (calibrate, compare and deadreckon show their progress on standard error when it is a\n"
+    "  (calibrate, compare, deadreckon and import show their progress on standard error when it is "
+    "a\n"
     "  terminal; --quiet turns that off)\n";
 
 const char* const kCommands[] = {"check",      "simulate", "rtk",    "calibrate", "compare",
@@ -205,7 +206,8 @@ int runImportCommand(int argc, char** argv) {
       "nav_msgs/Odometry or geometry_msgs/TwistStamped topic")(
       "fix-topic", po::value<std::string>()->default_value(""), "sensor_msgs/NavSatFix topic")(
       "out", po::value<std::string>()->required(), "output folder")(
-      "overwrite", "replace the outputs of an earlier import in --out");
+      "overwrite", "replace the outputs of an earlier import in --out")("quiet",
+                                                                        "no progress line");
   const po::variables_map vm = giocal::parseCommand(
       argc, argv, opts,
       "giocal import: a ROS 1 or ROS 2 bag, or a u-blox UBX log, to a dataset folder giocal reads",
@@ -218,6 +220,7 @@ int runImportCommand(int argc, char** argv) {
   job.fix_topic = vm["fix-topic"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") > 0;
+  job.quiet = vm.count("quiet") > 0;
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   giocal::runImport(job, std::cout);

@@ -14,6 +14,7 @@
 #include "common/gnss/spp.h"
 #include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
+#include "common/io/progress_line.h"
 #include "common/io/sensor_logs.h"
 #include "common/math/rotation.h"
 #include "import/bag_dataset.h"
@@ -113,112 +114,119 @@ nlohmann::ordered_json stageRawGnss(OutputSet& outputs, import::UbxLog& ubx, std
 
 void importUbx(const ImportJob& job, std::ostream& log) {
   refuseToOverwrite(job, kUbxFiles);
-  import::UbxLog ubx = import::readUbxLog(job.ubx);
+  ProgressLine progress("import", 0.0, 1.0, job.quiet, "of the file");
+  import::UbxLog ubx = import::readUbxLog(job.ubx, [&](double share) {
+    progress.update(share);
   checkStop(job.stop);
-  OutputSet outputs(job.out);
-  log << "giocal import: " << job.ubx << "\n";
-  nlohmann::ordered_json j;
-  const nlohmann::ordered_json gnss = stageRawGnss(outputs, ubx, log);
-  j["files"] = {{"rover.obs", outputs.close("rover.obs")}, {"nav.rnx", outputs.close("nav.rnx")}};
-  j["source"] = job.ubx;
-  j.update(gnss);
-  j["warnings"] = ubx.warnings;
-  outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
-  outputs.commit();
-  for (const std::string& w : ubx.warnings) log << "  warning: " << w << "\n";
-  log << "  outputs: " << job.out << "/{rover.obs, nav.rnx, import.json}\n";
-}
+});
+progress.clear();
+checkStop(job.stop);
+OutputSet outputs(job.out);
+log << "giocal import: " << job.ubx << "\n";
+nlohmann::ordered_json j;
+const nlohmann::ordered_json gnss = stageRawGnss(outputs, ubx, log);
+j["files"] = {{"rover.obs", outputs.close("rover.obs")}, {"nav.rnx", outputs.close("nav.rnx")}};
+j["source"] = job.ubx;
+j.update(gnss);
+j["warnings"] = ubx.warnings;
+outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+outputs.commit();
+for (const std::string& w : ubx.warnings) log << "  warning: " << w << "\n";
+log << "  outputs: " << job.out << "/{rover.obs, nav.rnx, import.json}\n";
+}  // namespace
 
 void importBag(const ImportJob& job, std::ostream& log) {
   refuseToOverwrite(job, kBagFiles);
   const auto bag = import::openBag(job.bag);
-  import::BagDataset d =
-      import::readBagDataset(*bag, {job.imu_topic, job.odom_topic, job.fix_topic});
+  ProgressLine progress("import", 0.0, 1.0, job.quiet, "of the messages");
+  import::BagDataset d = import::readBagDataset(
+      *bag, {job.imu_topic, job.odom_topic, job.fix_topic}, [&](double share) {
+        progress.update(share);
   checkStop(job.stop);
-  log << "giocal import: " << job.bag << "\n";
+});
+progress.clear();
+checkStop(job.stop);
+log << "giocal import: " << job.bag << "\n";
 
-  OutputSet outputs(job.out);
-  DatasetDescription desc;
-  desc.folder = outputs.staging();
-  desc.rover_obs = desc.base_obs = "";  // no raw GNSS in a bag of fixes
-  desc.nav.clear();
-  desc.imu_noise = d.imu_noise;
-  desc.odom_noise = d.odom_noise;
-  // The bag does not say how the IMU is mounted: the drive does (or the identity stays, 5 deg).
-  const CoarseMounting mounting = estimateMounting(d.imu, d.odom);
-  nlohmann::ordered_json mounting_json = {{"found_from_data", mounting.valid}};
-  if (mounting.valid) {
-    desc.initial_calibration.mean.q_b_m = mounting.q_b_m;
-    desc.initial_calibration.sd_rpy_b_m = mounting.sigma_rpy;
-    const Eigen::Vector3d rpy = rpyFromRotation(mounting.q_b_m.toRotationMatrix()) * kRadToDeg;
-    const Eigen::Vector3d sd = mounting.sigma_rpy * kRadToDeg;
-    mounting_json["rpy_b_m_deg"] = {rpy.x(), rpy.y(), rpy.z()};
-    mounting_json["sigma_deg"] = {sd.x(), sd.y(), sd.z()};
-    mounting_json["yaw_rate_slope"] = mounting.yaw_rate_slope;
-    log << std::fixed << std::setprecision(1) << "  mounting from the data: rpy_b_m [" << rpy.x()
-        << ", " << rpy.y() << ", " << rpy.z() << "] deg, sigma [" << sd.x() << ", " << sd.y()
-        << ", " << sd.z() << "] deg (the initial guess in dataset.yaml)\n";
-    log.unsetf(std::ios::fixed);
-  } else {
-    mounting_json["why_not"] = mounting.why_not;
-    log << "  warning: mounting not found from the data (" << mounting.why_not
-        << "): the initial guess is the identity; give it in dataset.yaml\n";
-  }
-  nlohmann::ordered_json raw_gnss;
-  if (d.raw_gnss) {
-    raw_gnss = stageRawGnss(outputs, *d.raw_gnss, log);
-    desc.rover_obs = "rover.obs";  // no base station in a robot's bag: base_obs stays empty
-    desc.nav = {"nav.rnx"};
-  }
-  writeImuCsv(outputs.stagedPath("imu.csv"), d.imu);
-  writeOdomCsv(outputs.stagedPath("odom.csv"), d.odom);
-  nlohmann::ordered_json files = {{"imu.csv", outputs.close("imu.csv")},
-                                  {"odom.csv", outputs.close("odom.csv")}};
-  if (d.raw_gnss) {
-    files["rover.obs"] = outputs.close("rover.obs");
-    files["nav.rnx"] = outputs.close("nav.rnx");
-  }
-  if (!d.fixes.empty()) {
-    PosHeader h;
-    h.program = "giocal import (sensor_msgs/NavSatFix of " + d.fix_counts.topic + ")";
-    h.inputs = {job.bag};
-    writePosFile(outputs.stagedPath("gnss.pos"), h, d.fixes);
-    files["gnss.pos"] = outputs.close("gnss.pos");
-  }
-  outputs.stagedPath("dataset.yaml");  // joins the set; written by the dataset writer
-  writeDatasetDescription(desc);
-  files["dataset.yaml"] = outputs.close("dataset.yaml");
-  nlohmann::ordered_json j;
-  j["files"] = files;
-  j["source"] = job.bag;
-  j["imu"] = countsJson(d.imu_counts);
-  j["odometry"] = countsJson(d.odom_counts);
-  if (!d.fix_counts.topic.empty()) j["fix"] = countsJson(d.fix_counts);
-  if (d.raw_gnss) {
-    raw_gnss["topics"] = {d.rawx_topic, d.sfrbx_topic};
-    j["raw_gnss"] = raw_gnss;
-  }
-  j["utc_stamps"] = d.utc_stamps;
-  j["leap_seconds"] = d.leap_seconds;
-  j["noise_sources"] = d.noise_sources;
-  j["mounting"] = mounting_json;
-  j["warnings"] = d.warnings;
-  outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
-  outputs.commit();
-
-  log << "  " << d.imu.size() << " IMU samples (" << d.imu_counts.topic << "), " << d.odom.size()
-      << " odometry samples (" << d.odom_counts.topic << ")";
-  if (!d.fixes.empty())
-    log << ", " << d.fixes.size() << " GNSS fixes (" << d.fix_counts.topic << ")";
-  log << std::fixed << std::setprecision(1) << " over " << d.imu.back().t - d.imu.front().t
-      << " s\n";
-  for (const std::string& n : d.noise_sources) log << "  noise: " << n << "\n";
-  for (const std::string& w : d.warnings) log << "  warning: " << w << "\n";
-  log << "  outputs: " << job.out << "/{imu.csv, odom.csv, "
-      << (d.fixes.empty() ? "" : "gnss.pos, ") << (d.raw_gnss ? "rover.obs, nav.rnx, " : "")
-      << "dataset.yaml, import.json}\n";
+OutputSet outputs(job.out);
+DatasetDescription desc;
+desc.folder = outputs.staging();
+desc.rover_obs = desc.base_obs = "";  // no raw GNSS in a bag of fixes
+desc.nav.clear();
+desc.imu_noise = d.imu_noise;
+desc.odom_noise = d.odom_noise;
+// The bag does not say how the IMU is mounted: the drive does (or the identity stays, 5 deg).
+const CoarseMounting mounting = estimateMounting(d.imu, d.odom);
+nlohmann::ordered_json mounting_json = {{"found_from_data", mounting.valid}};
+if (mounting.valid) {
+  desc.initial_calibration.mean.q_b_m = mounting.q_b_m;
+  desc.initial_calibration.sd_rpy_b_m = mounting.sigma_rpy;
+  const Eigen::Vector3d rpy = rpyFromRotation(mounting.q_b_m.toRotationMatrix()) * kRadToDeg;
+  const Eigen::Vector3d sd = mounting.sigma_rpy * kRadToDeg;
+  mounting_json["rpy_b_m_deg"] = {rpy.x(), rpy.y(), rpy.z()};
+  mounting_json["sigma_deg"] = {sd.x(), sd.y(), sd.z()};
+  mounting_json["yaw_rate_slope"] = mounting.yaw_rate_slope;
+  log << std::fixed << std::setprecision(1) << "  mounting from the data: rpy_b_m [" << rpy.x()
+      << ", " << rpy.y() << ", " << rpy.z() << "] deg, sigma [" << sd.x() << ", " << sd.y() << ", "
+      << sd.z() << "] deg (the initial guess in dataset.yaml)\n";
   log.unsetf(std::ios::fixed);
+} else {
+  mounting_json["why_not"] = mounting.why_not;
+  log << "  warning: mounting not found from the data (" << mounting.why_not
+      << "): the initial guess is the identity; give it in dataset.yaml\n";
 }
+nlohmann::ordered_json raw_gnss;
+if (d.raw_gnss) {
+  raw_gnss = stageRawGnss(outputs, *d.raw_gnss, log);
+  desc.rover_obs = "rover.obs";  // no base station in a robot's bag: base_obs stays empty
+  desc.nav = {"nav.rnx"};
+}
+writeImuCsv(outputs.stagedPath("imu.csv"), d.imu);
+writeOdomCsv(outputs.stagedPath("odom.csv"), d.odom);
+nlohmann::ordered_json files = {{"imu.csv", outputs.close("imu.csv")},
+                                {"odom.csv", outputs.close("odom.csv")}};
+if (d.raw_gnss) {
+  files["rover.obs"] = outputs.close("rover.obs");
+  files["nav.rnx"] = outputs.close("nav.rnx");
+}
+if (!d.fixes.empty()) {
+  PosHeader h;
+  h.program = "giocal import (sensor_msgs/NavSatFix of " + d.fix_counts.topic + ")";
+  h.inputs = {job.bag};
+  writePosFile(outputs.stagedPath("gnss.pos"), h, d.fixes);
+  files["gnss.pos"] = outputs.close("gnss.pos");
+}
+outputs.stagedPath("dataset.yaml");  // joins the set; written by the dataset writer
+writeDatasetDescription(desc);
+files["dataset.yaml"] = outputs.close("dataset.yaml");
+nlohmann::ordered_json j;
+j["files"] = files;
+j["source"] = job.bag;
+j["imu"] = countsJson(d.imu_counts);
+j["odometry"] = countsJson(d.odom_counts);
+if (!d.fix_counts.topic.empty()) j["fix"] = countsJson(d.fix_counts);
+if (d.raw_gnss) {
+  raw_gnss["topics"] = {d.rawx_topic, d.sfrbx_topic};
+  j["raw_gnss"] = raw_gnss;
+}
+j["utc_stamps"] = d.utc_stamps;
+j["leap_seconds"] = d.leap_seconds;
+j["noise_sources"] = d.noise_sources;
+j["mounting"] = mounting_json;
+j["warnings"] = d.warnings;
+outputs.open("import.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+outputs.commit();
+
+log << "  " << d.imu.size() << " IMU samples (" << d.imu_counts.topic << "), " << d.odom.size()
+    << " odometry samples (" << d.odom_counts.topic << ")";
+if (!d.fixes.empty()) log << ", " << d.fixes.size() << " GNSS fixes (" << d.fix_counts.topic << ")";
+log << std::fixed << std::setprecision(1) << " over " << d.imu.back().t - d.imu.front().t << " s\n";
+for (const std::string& n : d.noise_sources) log << "  noise: " << n << "\n";
+for (const std::string& w : d.warnings) log << "  warning: " << w << "\n";
+log << "  outputs: " << job.out << "/{imu.csv, odom.csv, " << (d.fixes.empty() ? "" : "gnss.pos, ")
+    << (d.raw_gnss ? "rover.obs, nav.rnx, " : "") << "dataset.yaml, import.json}\n";
+log.unsetf(std::ios::fixed);
+}  // namespace giocal
 
 }  // namespace
 

@@ -14,6 +14,7 @@ struct ImportJob {
   std::string ubx, bag, out;
   std::string imu_topic, odom_topic, fix_topic;  // empty: found by message type
   bool overwrite = false;
+  bool quiet = false;  // no progress line
   const StopRequest* stop = nullptr;
 };
 

@@ -6,8 +6,8 @@
 #include <ostream>
 #include <string>
 
-#include "apps/progress_line.h"
 #include "common/calibration/run_writer.h"
+#include "common/io/progress_line.h"
 
 namespace giocal {
 

@@ -18,6 +18,7 @@
 //                           independent processes) [--results <file.csv>] (the per-seed rows, for
 //                           --merge) [--label <name>] (the estimator's name in the rows, e.g.
 //                           fgo-batch for a run with a window covering the whole drive)
+//                           [--quiet 1] (no progress line on a terminal's standard error)
 //        giocal_monte_carlo --merge <file.csv>... [--batch <name>]   (prints the summary of the
 //                           shards' rows; --batch: the accuracy targets against that estimator)
 #include <sys/resource.h>
@@ -39,6 +40,7 @@
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/initial_state.h"
+#include "common/io/progress_line.h"
 #include "common/math/rotation.h"
 #include "common/online/run_sink.h"
 #include "replay/config.h"
@@ -77,7 +79,7 @@ int main(int argc, char** argv) try {
   int seeds = 20, first = 1, shard = 1, shards = 1;
   std::string config, results, label, batch;
   double arw = -1.0, gyro_bias = -1.0, straight_s = -1.0, arc_s = -1.0;  // negative: the preset's
-  bool guess_at_truth = false;
+  bool guess_at_truth = false, quiet = false;
   std::vector<std::string> schemes{"TC"}, merge;
   std::string box_csv, only;
   for (int i = 1; i < argc; ++i) {
@@ -118,6 +120,8 @@ int main(int argc, char** argv) try {
       results = v;
     else if (k == "--label")
       label = v;
+    else if (k == "--quiet")
+      quiet = v != "0";
     else if (k == "--batch")
       batch = v;
     else if (k == "--shard") {
@@ -196,6 +200,7 @@ int main(int argc, char** argv) try {
   std::printf("%-6s %-5s %8s %8s %8s %8s %8s %10s %10s %8s %6s %8s\n", "seed", "est", "X m", "Y m",
               "roll", "pitch", "yaw", "s_v", "s_w", "NEES7", "fix%", "wall s");
   // Adds one final estimate to the rows and prints it.
+  giocal::ProgressLine progress("giocal_monte_carlo", first, first + seeds, quiet, "of the seeds");
   auto score = [&](int seed, const std::string& name, const giocal::CalibrationEstimate& est,
                    const giocal::OdometerCalibration& truth, const giocal::CalibrationRun* r) {
     giocal::bench::SeedResult row;
@@ -212,6 +217,7 @@ int main(int argc, char** argv) try {
     }
     rows.push_back(row);
     const double* v = row.error.data();
+    progress.clear();
     std::printf("%-6d %-5s %8.4f %8.4f %8.3f %8.3f %8.3f %10.2e %10.2e %8.2f %6.1f %8.3f\n", seed,
                 name.c_str(), v[0], v[1], v[2], v[3], v[4], v[5], v[6], row.nees7, row.fix_percent,
                 row.wall_s);
@@ -229,6 +235,7 @@ int main(int argc, char** argv) try {
   }
   for (int seed = first; seed < first + seeds; ++seed) {
     if ((seed - first) % shards != shard - 1) continue;
+    progress.update(seed);
     std::filesystem::remove_all(work);
     const giocal::sim::SimulatedLogs logs =
         giocal::sim::simulate(cfg, static_cast<std::uint64_t>(seed));
@@ -258,6 +265,7 @@ int main(int argc, char** argv) try {
         try {
           r = run(in_s, o, &rec);
         } catch (const std::exception& e) {
+          progress.clear();
           std::printf("%-6d %-4s failed: %s\n", seed, key.c_str(), e.what());
           giocal::bench::SeedResult failed;
           failed.seed = seed;
@@ -283,6 +291,7 @@ int main(int argc, char** argv) try {
       }
     }
   }
+  progress.clear();
   if (box) std::fclose(box);
   std::filesystem::remove_all(work);
   giocal::bench::printSummary(description, rows, batch);

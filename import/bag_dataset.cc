@@ -192,7 +192,8 @@ void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams,
 
 }  // namespace
 
-BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
+BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
+                          const std::function<void(double)>& progress) {
   BagDataset out;
   const BagTopic* imu =
       pick(bag, topics.imu, "sensor_msgs/Imu", {{"sensor_msgs", "Imu"}}, true, "--imu-topic");
@@ -302,7 +303,14 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics) {
       out.fixes.push_back(f);
     }
   };
+  long long total = 0, visited = 0;
+  for (const BagTopic& t : bag.topics()) {
+    if (names.count(t.topic)) total += t.messages;
+  }
   bag.read(names, [&](const BagTopic& t, double received, const uint8_t* data, std::size_t size) {
+    if (progress && total > 0 && ++visited % 1000 == 0) {
+      progress(static_cast<double>(visited) / static_cast<double>(total));
+    }
     if (raw.count(t.topic)) {
       const std::string where = "topic " + t.topic + ", message " + std::to_string(++raw_messages);
       try {

@@ -2,6 +2,7 @@
 // the sensor noise its message covariances give, in GPS time, and every sample it had to drop.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,7 +50,9 @@ struct BagDataset {
 
 /// Reads the bag; throws std::runtime_error naming the bag and the topic or type for a bag without
 /// an IMU or odometry topic, ambiguous or unknown topics, messages that do not decode, and sensors
-/// whose stamps are not on one time base.
-BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics);
+/// whose stamps are not on one time base. `progress` (may be empty) is called with the share of
+/// the messages read (it may throw to stop).
+BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
+                          const std::function<void(double)>& progress = {});
 
 }  // namespace giocal::import

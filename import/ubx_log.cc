@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -145,11 +146,18 @@ UbxLog UbxDecoder::finish(const UbxStreamCounts& stream) {
   return log;
 }
 
-UbxLog readUbxLog(const std::string& path) {
+UbxLog readUbxLog(const std::string& path, const std::function<void(double)>& progress) {
   UbxStream stream(path);
   UbxDecoder decoder(path);
+  std::error_code ec;
+  const double size = static_cast<double>(std::filesystem::file_size(path, ec));
   UbxFrame f;
-  while (stream.next(f)) decoder.add(f, "byte " + std::to_string(f.offset));
+  for (long n = 1; stream.next(f); ++n) {
+    decoder.add(f, "byte " + std::to_string(f.offset));
+    if (progress && !ec && size > 0.0 && n % 1000 == 0) {
+      progress(static_cast<double>(f.offset) / size);
+    }
+  }
   return decoder.finish(stream.counts());
 }
 

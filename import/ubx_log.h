@@ -2,6 +2,7 @@
 // (RXM-SFRBX: GPS/QZSS LNAV, Galileo I/NAV), with everything skipped or damaged counted.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,7 @@ class UbxDecoder {
 };
 
 /// Reads the log; throws std::runtime_error naming the file when it has no RXM-RAWX epoch.
-UbxLog readUbxLog(const std::string& path);
+/// `progress` (may be empty) is called with the share of the file read (it may throw to stop).
+UbxLog readUbxLog(const std::string& path, const std::function<void(double)>& progress = {});
 
 }  // namespace giocal::import

@@ -9,8 +9,10 @@ namespace giocal {
 class ProgressLine {
  public:
   /// Reports data times from t_begin to t_end; disabled when `quiet`, when standard error is not
-  /// a terminal, or when the span is empty.
-  ProgressLine(std::string label, double t_begin, double t_end, bool quiet);
+  /// a terminal, or when the span is empty. `of_what` follows the percentage ("of the data",
+  /// "of the seeds", "of the file").
+  ProgressLine(std::string label, double t_begin, double t_end, bool quiet,
+               std::string of_what = "of the data");
   ~ProgressLine() { clear(); }
   ProgressLine(const ProgressLine&) = delete;
   ProgressLine& operator=(const ProgressLine&) = delete;
@@ -22,7 +24,7 @@ class ProgressLine {
   bool enabled() const { return enabled_; }
 
  private:
-  std::string label_;
+  std::string label_, of_what_;
   double t_begin_, t_end_;
   bool enabled_;
   bool shown_ = false;

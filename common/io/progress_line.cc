@@ -1,4 +1,4 @@
-#include "apps/progress_line.h"
+#include "common/io/progress_line.h"
 
 #include <unistd.h>
 
@@ -18,8 +18,10 @@ double now() {
 
 }  // namespace
 
-ProgressLine::ProgressLine(std::string label, double t_begin, double t_end, bool quiet)
+ProgressLine::ProgressLine(std::string label, double t_begin, double t_end, bool quiet,
+                           std::string of_what)
     : label_(std::move(label)),
+      of_what_(std::move(of_what)),
       t_begin_(t_begin),
       t_end_(t_end),
       enabled_(!quiet && t_end > t_begin && ::isatty(STDERR_FILENO)),
@@ -32,13 +34,14 @@ void ProgressLine::update(double t) {
   last_drawn_ = wall;
   const double share = std::min(1.0, std::max(0.0, (t - t_begin_) / (t_end_ - t_begin_)));
   const double elapsed = wall - started_;
-  char text[160];
+  char text[200];
   if (share > 0.01) {
-    std::snprintf(text, sizeof text, "\r  %s: %3.0f %% of the data, %.0f s elapsed, %.0f s left  ",
-                  label_.c_str(), 100.0 * share, elapsed, elapsed * (1.0 - share) / share);
+    std::snprintf(text, sizeof text, "\r  %s: %3.0f %% %s, %.0f s elapsed, %.0f s left  ",
+                  label_.c_str(), 100.0 * share, of_what_.c_str(), elapsed,
+                  elapsed * (1.0 - share) / share);
   } else {
-    std::snprintf(text, sizeof text, "\r  %s: %3.0f %% of the data, %.0f s elapsed  ",
-                  label_.c_str(), 100.0 * share, elapsed);
+    std::snprintf(text, sizeof text, "\r  %s: %3.0f %% %s, %.0f s elapsed  ", label_.c_str(),
+                  100.0 * share, of_what_.c_str(), elapsed);
   }
   std::fputs(text, stderr);
   std::fflush(stderr);
