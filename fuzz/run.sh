@@ -43,6 +43,8 @@ for f in imu.csv odom.csv truth.csv; do
 done
 { printf '\x03'; head -40 "$root/data/real/mosaic-static-nagoya/rover_rtk.pos"; } \
   > "$out/fuzz_csv_logs/corpus/pos"
+printf '\x04t_start,t_end,type\n1403252430,1403252750,open_sky\n1403252750,1403253060,few_trees\n' \
+  > "$out/fuzz_csv_logs/corpus/scenes"
 # The real F9P log in pieces of 20 kB (a whole log is slow per execution).
 if [ -d "$out/fuzz_ubx" ]; then
   split -b 20000 -a 3 "$root/data/real/ublox-f9p-walk/gnss_1730.ubx" "$out/fuzz_ubx/corpus/seed"
