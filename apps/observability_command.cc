@@ -1,12 +1,17 @@
 #include "apps/observability_command.h"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <iomanip>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
 
 #include "common/calibration/weak_directions.h"
+#include "common/gnss/rtk_job.h"
+#include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
 #include "common/io/sensor_logs.h"
 #include "common/io/text.h"
@@ -15,6 +20,14 @@
 
 namespace giocal {
 namespace {
+
+/// A temporary .pos file, removed with the object.
+struct TempPosFile {
+  std::string path = (std::filesystem::temp_directory_path() /
+                      ("giocal_observability_" + std::to_string(::getpid()) + ".pos"))
+                         .string();
+  ~TempPosFile() { std::filesystem::remove(path); }
+};
 
 std::string motionText(const DriveMotion& m) {
   std::ostringstream s;
@@ -38,7 +51,23 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   if (!json.empty() && std::filesystem::exists(json) && !job.overwrite) {
     throw std::runtime_error(json + " exists; give --overwrite to replace it");
   }
-  CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
+  // Without a truth or a given solution, the drive's motion comes from giocal rtk's solution.
+  std::string positions = job.positions;
+  std::unique_ptr<TempPosFile> own_rtk;
+  const DatasetDescription d = readDatasetDescription(job.data);
+  if (positions.empty() && d.truth.empty()) {
+    requireRawGnss(d);
+    own_rtk = std::make_unique<TempPosFile>();
+    RtkJob rtk;
+    rtk.rover = d.pathOf(d.rover_obs);
+    rtk.base = d.pathOf(d.base_obs);
+    for (const std::string& n : d.nav) rtk.nav.push_back(d.pathOf(n));
+    rtk.base_pos = d.base_position_ecef;
+    rtk.options = readGiocalConfig(job.config).rtk;
+    rtk.out = positions = own_rtk->path;
+    runRtk(rtk);
+  }
+  CalibrationInputs in = loadCalibrationInputs(job.data, positions);
   ObservabilityJob oj;
   oj.options = readGiocalConfig(job.config).calibration;
   oj.window_s = job.window_s;
@@ -54,13 +83,9 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   } else {
     throw std::runtime_error("--calibration must be truth or guess, not '" + calibration + "'");
   }
-  std::string reference = "--pos " + job.positions + " (the filter's own estimate)";
-  if (job.positions.empty()) {
-    if (in.description.truth.empty()) {
-      throw std::runtime_error(job.data +
-                               " has no truth.csv: give --pos <file.pos> (an RTK solution of the "
-                               "drive, for example from giocal rtk)");
-    }
+  std::string reference = (own_rtk ? "giocal rtk's solution" : "--pos " + job.positions) +
+                          " (linearized at the filter's own estimate)";
+  if (positions.empty()) {
     oj.reference = ReferenceTrajectory(readTruthCsv(in.description.pathOf(in.description.truth)));
     std::vector<double> times;
     for (const ObsEpoch& e : in.rover.epochs) times.push_back(e.t);
@@ -72,8 +97,8 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   }
   const ObservabilityReport r = analyzeObservability(in, oj);
 
-  log << "giocal observability: " << job.data << "\n  motion from " << reference
-      << "; models linearized at the " << calibration << " calibration\n"
+  log << "giocal observability: " << job.data << "\n  motion from " << reference << "; calibration "
+      << (oj.reference ? "held at" : "started from") << " the " << calibration << "\n"
       << "  window [s]    motion in it (odometer, uncalibrated)              expected 1-sigma at "
          "its end:\n"
       << std::string(70, ' ') << "s_v      s_w      x [m]  y [m]  z [m]  roll   pitch  yaw [deg]\n";
@@ -92,7 +117,9 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
     if (k == 4) {
       log << "  p_b_m.z          " << std::setw(10) << r.prior_sigma[4] << "  " << std::setw(10)
           << r.p_b_m_z_sigma_free << "   m  "
-          << (r.p_b_m_z_observable ? "observable" : "UNOBSERVABLE (planar motion)")
+          << (!r.p_b_m_z_assessed    ? "not assessed without truth.csv"
+              : r.p_b_m_z_observable ? "observable"
+                                     : "UNOBSERVABLE (planar motion)")
           << " (along the vehicle's vertical, were it estimated)\n";
       continue;
     }
@@ -112,7 +139,8 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   j["prior_sigma"] = sigmaJson(r.prior_sigma);
   j["expected_sigma"] = sigmaJson(r.expected_sigma);
   j["p_b_m_z"] = {{"sigma_if_estimated", r.p_b_m_z_sigma_free},
-                  {"observable", r.p_b_m_z_observable}};
+                  {"observable", r.p_b_m_z_observable},
+                  {"assessed", r.p_b_m_z_assessed}};
   std::vector<std::string> weak;
   for (int k : r.weak) weak.push_back(calibrationStateName(k));
   j["weak"] = weak;

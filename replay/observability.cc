@@ -152,7 +152,7 @@ std::vector<std::string> adviceFor(const ObservabilityReport& r) {
     if (*motionThatInforms(k))
       advice.push_back(std::string(calibrationStateName(k)) + ": " + motionThatInforms(k));
   }
-  if (!r.p_b_m_z_observable) {
+  if (r.p_b_m_z_assessed && !r.p_b_m_z_observable) {
     advice.push_back(
         "p_b_m.z: unobservable on this drive (planar motion: the vehicle neither rolls nor "
         "pitches enough); slopes and ramps would inform it, otherwise it stays at the guess "
@@ -215,7 +215,8 @@ ObservabilityReport analyzeObservability(const CalibrationInputs& in, const Obse
   const Eigen::Vector3d up_b = job.linearize_at.q_b_m * Eigen::Vector3d::UnitZ();
   r.p_b_m_z_sigma_free =
       std::sqrt(up_b.dot(pass_z.final.cov.block<3, 3>(calib_index::kP, calib_index::kP) * up_b));
-  r.p_b_m_z_observable = r.p_b_m_z_sigma_free < 0.3 * r.prior_sigma[4];
+  r.p_b_m_z_assessed = r.linearized_at_reference;
+  r.p_b_m_z_observable = r.p_b_m_z_assessed && r.p_b_m_z_sigma_free < 0.3 * r.prior_sigma[4];
   const auto information = [](const Vec8& s) { return s.cwiseProduct(s).cwiseInverse(); };
   Vec8 before = r.prior_sigma;
   double t0 = 0.0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -77,6 +78,31 @@ TEST(Observability, StraightDriveNamesWhatOnlyTurnsInform) {
   }
   EXPECT_FALSE(names(j["weak"], "s_v")) << log;
   EXPECT_NE(log.find("advice: s_w: turning"), std::string::npos) << log;
+}
+
+TEST(Observability, WithoutTruthItRunsOnGiocalRtksSolutionAndSaysWhatItCannotAssess) {
+  test::TempDir dir;
+  const std::string data = dir.file("data");
+  run("simulate --config " + std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml --out " +
+      data + " --seed 13");
+  std::filesystem::remove(data + "/truth.csv");
+  std::ifstream in(data + "/dataset.yaml");
+  std::stringstream yaml;
+  yaml << in.rdbuf();
+  in.close();
+  std::ofstream(data + "/dataset.yaml")
+      << std::regex_replace(yaml.str(), std::regex("\\n *truth: truth.csv"), "");
+  const std::string log = run("observability --data " + data + " --out " + dir.file("obs"));
+  EXPECT_NE(log.find("motion from giocal rtk's solution"), std::string::npos) << log;
+  EXPECT_NE(log.find("not assessed without truth.csv"), std::string::npos) << log;
+  std::ifstream json(dir.file("obs/observability.json"));
+  ASSERT_TRUE(json.good()) << log;
+  const nlohmann::json j = nlohmann::json::parse(json);
+  EXPECT_FALSE(j["p_b_m_z"]["assessed"].get<bool>());
+  EXPECT_LT(j["expected_sigma"]["s_w"].get<double>(), 0.2 * j["prior_sigma"]["s_w"].get<double>());
+  // No temporary solution is left behind.
+  for (const auto& f : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+    EXPECT_EQ(f.path().filename().string().rfind("giocal_observability_", 0), std::string::npos);
 }
 
 }  // namespace
