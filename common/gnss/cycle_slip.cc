@@ -67,17 +67,26 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
       } else {
         const Track& p = it->second;
         const double dt = epoch.t - p.t;
-        if (dual && p.has_gf &&
-            std::abs(gf - p.gf) > options_.gf_threshold + options_.gf_rate * dt) {
+        const bool gf_tested = dual && p.has_gf;
+        if (gf_tested && std::abs(gf - p.gf) > options_.gf_threshold + options_.gf_rate * dt) {
           slip = true;
         }
-        if (tr.has_mw && p.has_mw && std::abs(mw - p.mw) > options_.mw_threshold) slip = true;
         // The trapezoidal Doppler prediction holds over a short gap only; over a longer one
         // without the geometry-free test nothing can tell a slip, so it counts as one.
+        const bool doppler_tested =
+            dt <= options_.doppler_max_gap && !std::isnan(s->D) && !std::isnan(p.D);
         if (dt > options_.doppler_max_gap) {
-          if (!(dual && p.has_gf)) slip = true;
-        } else if (!std::isnan(s->D) && !std::isnan(p.D)) {
+          if (!gf_tested) slip = true;
+        } else if (doppler_tested) {
           doppler_misfit.push_back({key, (s->L - p.L) + 0.5 * (s->D + p.D) * dt});
+        }
+        // Melbourne-Wuebbena carries the code: an NLOS or multipath code error of metres moves it
+        // by as many wide-lane cycles. When the phase alone passes both the geometry-free and the
+        // Doppler test, its jump is the code's, not a slip (the code outlier check deals with
+        // it); it decides only where one of those tests is missing.
+        if (tr.has_mw && p.has_mw && std::abs(mw - p.mw) > options_.mw_threshold &&
+            !(gf_tested && doppler_tested)) {
+          slip = true;
         }
       }
       slip_[key] = slip;

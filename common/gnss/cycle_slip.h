@@ -13,7 +13,8 @@ namespace giocal {
 struct CycleSlipOptions {
   double gf_threshold = 0.05;      // jump of the geometry-free combination [m], plus...
   double gf_rate = 0.003;          // ...this much per second between epochs (ionosphere) [m/s]
-  double mw_threshold = 4.0;       // jump of Melbourne-Wuebbena [wide-lane cycles]
+  double mw_threshold = 4.0;       // jump of Melbourne-Wuebbena [wide-lane cycles]; decides only
+                                   // where the geometry-free or the Doppler test is missing
   double doppler_threshold = 5.0;  // phase change against Doppler, common part removed [cycles]
   double max_gap = 60.0;           // a longer gap in tracking counts as a slip [s]
   double doppler_max_gap = 2.0;    // the Doppler test bridges gaps up to this long [s]
