@@ -47,10 +47,14 @@ nlohmann::ordered_json sigmaJson(const Eigen::Matrix<double, 8, 1>& s) {
 }  // namespace
 
 void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
+  if (!(job.position_sigma_m > 0.0) || !(job.window_s > 0.0)) {
+    throw std::runtime_error("--position-sigma and --window must be positive");
+  }
   const std::string json = job.out.empty() ? "" : job.out + "/observability.json";
   if (!json.empty() && std::filesystem::exists(json) && !job.overwrite) {
     throw std::runtime_error(json + " exists; give --overwrite to replace it");
   }
+  const auto config = readGiocalConfig(job.config);
   // Without a truth or a given solution, the drive's motion comes from giocal rtk's solution.
   std::string positions = job.positions;
   std::unique_ptr<TempPosFile> own_rtk;
@@ -63,13 +67,13 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
     rtk.base = d.pathOf(d.base_obs);
     for (const std::string& n : d.nav) rtk.nav.push_back(d.pathOf(n));
     rtk.base_pos = d.base_position_ecef;
-    rtk.options = readGiocalConfig(job.config).rtk;
+    rtk.options = config.rtk;
     rtk.out = positions = own_rtk->path;
     runRtk(rtk);
   }
   CalibrationInputs in = loadCalibrationInputs(job.data, positions);
   ObservabilityJob oj;
-  oj.options = readGiocalConfig(job.config).calibration;
+  oj.options = config.calibration;
   oj.window_s = job.window_s;
   oj.position_sigma_m = job.position_sigma_m;
   const std::string calibration =
