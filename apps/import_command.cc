@@ -66,12 +66,15 @@ SppCheck sppCheck(const import::UbxLog& log) {
 }
 
 // Stages rover.obs and nav.rnx of a decoded UBX stream and returns what import.json says of it.
-nlohmann::ordered_json stageRawGnss(OutputSet& outputs, import::UbxLog& ubx, std::ostream& log) {
+// `receiver` names what the observations came from; gnss_comm messages have no UBX frames.
+nlohmann::ordered_json stageRawGnss(OutputSet& outputs, import::UbxLog& ubx,
+                                    const std::string& receiver, std::ostream& log) {
+  const bool gnss_comm = receiver == "gnss_comm";
   const SppCheck spp = sppCheck(ubx);
   RinexObsHeader header;
   header.program = "giocal import";
-  header.marker = "UBX";
-  header.receiver = "u-blox (UBX-RXM-RAWX)";
+  header.marker = ubx.obs.header.marker;
+  header.receiver = gnss_comm ? "gnss_comm (GnssMeasMsg)" : "u-blox (UBX-RXM-RAWX)";
   header.approx_position = spp.first_p_e;
   header.interval = ubx.obs.header.interval;
   header.obs_types = ubx.obs.header.obs_types;
@@ -86,22 +89,24 @@ nlohmann::ordered_json stageRawGnss(OutputSet& outputs, import::UbxLog& ubx, std
   j["t_last"] = ubx.obs.epochs.back().t;
   j["interval_s"] = ubx.obs.header.interval;
   j["ephemerides"] = per_system;
-  j["frames"] = ubx.stream.frames;
-  j["bad_checksums"] = ubx.stream.bad_checksums;
-  j["skipped_bytes"] = ubx.stream.skipped_bytes;
-  j["truncated_end"] = ubx.stream.truncated_end;
-  j["rawx"] = {{"measurements", ubx.rawx.measurements},
-               {"unsupported_system", ubx.rawx.unsupported_system},
-               {"unknown_signal", ubx.rawx.unknown_signal},
-               {"invalid_code", ubx.rawx.invalid_code},
-               {"invalid_phase", ubx.rawx.invalid_phase},
-               {"clock_resets", ubx.rawx.clock_resets},
-               {"rejected_payloads", ubx.rawx_rejected},
-               {"epochs_out_of_order", ubx.epochs_out_of_order}};
-  j["subframes"] = {{"read", ubx.subframes},
-                    {"rejected", ubx.subframes_rejected},
-                    {"not_read", ubx.subframes_not_read}};
-  j["other_messages"] = ubx.other_messages;
+  if (!gnss_comm) {
+    j["frames"] = ubx.stream.frames;
+    j["bad_checksums"] = ubx.stream.bad_checksums;
+    j["skipped_bytes"] = ubx.stream.skipped_bytes;
+    j["truncated_end"] = ubx.stream.truncated_end;
+  }
+  j[gnss_comm ? "measurements" : "rawx"] = {{"measurements", ubx.rawx.measurements},
+                                            {"unsupported_system", ubx.rawx.unsupported_system},
+                                            {"unknown_signal", ubx.rawx.unknown_signal},
+                                            {"invalid_code", ubx.rawx.invalid_code},
+                                            {"invalid_phase", ubx.rawx.invalid_phase},
+                                            {"clock_resets", ubx.rawx.clock_resets},
+                                            {"rejected_payloads", ubx.rawx_rejected},
+                                            {"epochs_out_of_order", ubx.epochs_out_of_order}};
+  j[gnss_comm ? "ephemeris_messages" : "subframes"] = {{"read", ubx.subframes},
+                                                       {"rejected", ubx.subframes_rejected},
+                                                       {"not_read", ubx.subframes_not_read}};
+  if (!gnss_comm) j["other_messages"] = ubx.other_messages;
   j["spp_epochs_solved"] = spp.solved;
   log << "  raw GNSS: " << ubx.obs.epochs.size() << " epochs over " << std::fixed
       << std::setprecision(1) << ubx.obs.epochs.back().t - ubx.obs.epochs.front().t << " s, "
@@ -124,7 +129,7 @@ checkStop(job.stop);
 OutputSet outputs(job.out);
 log << "giocal import: " << job.ubx << "\n";
 nlohmann::ordered_json j;
-const nlohmann::ordered_json gnss = stageRawGnss(outputs, ubx, log);
+const nlohmann::ordered_json gnss = stageRawGnss(outputs, ubx, "ubx", log);
 j["files"] = {{"rover.obs", outputs.close("rover.obs")}, {"nav.rnx", outputs.close("nav.rnx")}};
 j["source"] = job.ubx;
 j.update(gnss);
@@ -177,7 +182,7 @@ if (mounting.valid) {
 }
 nlohmann::ordered_json raw_gnss;
 if (d.raw_gnss) {
-  raw_gnss = stageRawGnss(outputs, *d.raw_gnss, log);
+  raw_gnss = stageRawGnss(outputs, *d.raw_gnss, d.raw_gnss_source, log);
   desc.rover_obs = "rover.obs";  // no base station in a robot's bag: base_obs stays empty
   desc.nav = {"nav.rnx"};
 }
@@ -206,7 +211,8 @@ j["imu"] = countsJson(d.imu_counts);
 j["odometry"] = countsJson(d.odom_counts);
 if (!d.fix_counts.topic.empty()) j["fix"] = countsJson(d.fix_counts);
 if (d.raw_gnss) {
-  raw_gnss["topics"] = {d.rawx_topic, d.sfrbx_topic};
+  raw_gnss["messages"] = d.raw_gnss_source;
+  raw_gnss["topics"] = {d.raw_observation_topic, d.raw_ephemeris_topic};
   j["raw_gnss"] = raw_gnss;
 }
 j["utc_stamps"] = d.utc_stamps;

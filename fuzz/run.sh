@@ -54,6 +54,32 @@ if [ -d "$out/fuzz_ros_message" ]; then
   printf '\x00Header header\nfloat64[3] v\nstring s\nMSG: std_msgs/Header\nuint32 seq\ntime stamp\nstring frame_id\n\0\x01\0\0\0\x10\0\0\0\x20\0\0\0\x03\0\0\0imu' \
     > "$out/fuzz_ros_message/corpus/header"
   printf '\x01int32 a\nfloat64[] b\n\0\0\x01\0\0\x05\0\0\0\x02\0\0\0' > "$out/fuzz_ros_message/corpus/cdr"
+  # gnss_comm messages (flags 2): a GnssMeasMsg of one satellite, and a GnssEphemMsg.
+  python3 - "$out/fuzz_ros_message/corpus" <<'PY'
+import struct, sys
+time = "MSG: gnss_comm/GnssTimeMsg\nuint32 week\nfloat64 tow\n"
+obs = ("GnssObsMsg[] meas\nMSG: gnss_comm/GnssObsMsg\nGnssTimeMsg time\nuint32 sat\n"
+       + "".join(f"{t}[] {n}\n" for t, n in [("float64", "freqs"), ("float64", "CN0"),
+         ("uint8", "LLI"), ("uint8", "code"), ("float64", "psr"), ("float64", "psr_std"),
+         ("float64", "cp"), ("float64", "cp_std"), ("float64", "dopp"), ("float64", "dopp_std"),
+         ("uint8", "status")]) + time)
+f64 = lambda *v: struct.pack("<I", len(v)) + b"".join(struct.pack("<d", x) for x in v)
+u8 = lambda *v: struct.pack("<I", len(v)) + bytes(v)
+meas = (struct.pack("<I", 1) + struct.pack("<Id", 2300, 345600.0) + struct.pack("<I", 5)
+        + f64(1575.42e6) + f64(45.0) + u8(0) + u8(1) + f64(2.1e7) + f64(1.0) + f64(1.1e8)
+        + f64(0.01) + f64(-1200.0) + f64(0.1) + u8(3))
+names = ["A", "e", "i0", "omg", "OMG0", "M0", "delta_n", "OMG_dot", "i_dot", "cuc", "cus", "crc",
+         "crs", "cic", "cis", "af0", "af1", "af2", "tgd0", "tgd1", "A_dot", "n_dot"]
+ephem_def = ("uint32 sat\nGnssTimeMsg ttr\nGnssTimeMsg toe\nGnssTimeMsg toc\nfloat64 toe_tow\n"
+             "uint32 week\nuint32 iode\nuint32 iodc\nuint32 health\nuint32 code\n"
+             "float64 ura\n" + "".join(f"float64 {n}\n" for n in names) + time)
+ephem = (struct.pack("<I", 65) + struct.pack("<Id", 2300, 345600.0) * 3 + struct.pack("<d", 345600.0)
+         + struct.pack("<IIIIId", 2300, 10, 10, 0, 517, 3.12)
+         + struct.pack("<d", 2.9600e7) + struct.pack("<d", 2e-4) + b"".join(
+             struct.pack("<d", 0.1) for _ in names[2:]))
+for name, definition, body in [("gnss_comm_meas", obs, meas), ("gnss_comm_ephem", ephem_def, ephem)]:
+    open(f"{sys.argv[1]}/{name}", "wb").write(b"\x02" + definition.encode() + b"\0" + body)
+PY
 fi
 { printf '\x00'; cat "$sim/dataset.yaml"; } > "$out/fuzz_yaml/corpus/dataset"
 { printf '\x01'; cat "$root/config/giocal.yaml"; } > "$out/fuzz_yaml/corpus/config"

@@ -9,6 +9,7 @@
 
 #include "common/geodesy/wgs84.h"
 #include "common/time/gps_time.h"
+#include "import/gnss_comm_messages.h"
 #include "import/ublox_messages.h"
 
 namespace giocal::import {
@@ -215,11 +216,21 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
   const bool twist_stamped = isType(odom->type, "geometry_msgs", "TwistStamped");
   std::set<std::string> names;
   for (const auto& [name, s] : streams) names.insert(name);
-  // Raw GNSS: ublox_msgs carry no header; they go through the UBX decoder in bag order.
+  // Raw GNSS: ublox_msgs and gnss_comm messages carry their own GPS time; they are decoded in bag
+  // order. A bag holds one of the two conventions.
   std::map<std::string, RosSchema> raw;
   for (const BagTopic& t : bag.topics()) {
-    if (!isUbloxRawx(t.type) && !isUbloxSfrbx(t.type)) continue;
-    std::string& slot = isUbloxRawx(t.type) ? out.rawx_topic : out.sfrbx_topic;
+    const bool ublox = isUbloxRawx(t.type) || isUbloxSfrbx(t.type);
+    const bool gnss_comm = isGnssCommMeas(t.type) || isGnssCommEphem(t.type);
+    if (!ublox && !gnss_comm) continue;
+    const std::string source = ublox ? "ublox_msgs" : "gnss_comm";
+    if (!out.raw_gnss_source.empty() && out.raw_gnss_source != source)
+      throw std::runtime_error(bag.path() +
+                               ": raw GNSS both as ublox_msgs and as gnss_comm "
+                               "messages; giocal reads one receiver");
+    out.raw_gnss_source = source;
+    std::string& slot = isUbloxRawx(t.type) || isGnssCommMeas(t.type) ? out.raw_observation_topic
+                                                                      : out.raw_ephemeris_topic;
     if (!slot.empty())
       throw std::runtime_error(bag.path() + ": several " + t.type + " topics: " + slot + " " +
                                t.topic);
@@ -228,6 +239,7 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
     names.insert(t.topic);
   }
   UbxDecoder ubx(bag.path());
+  GnssCommDecoder gnss_comm(bag.path());
   long long raw_messages = 0;
 
   // One decoded message of an IMU, odometry or fix topic into the logs.
@@ -315,7 +327,10 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
       const std::string where = "topic " + t.topic + ", message " + std::to_string(++raw_messages);
       try {
         const RosMessage m = RosMessage::decode(raw.at(t.topic), bag.encoding(), data, size);
-        ubx.add(isUbloxRawx(t.type) ? rawxFrame(m) : sfrbxFrame(m), where);
+        if (isUbloxRawx(t.type)) ubx.add(rawxFrame(m), where);
+        if (isUbloxSfrbx(t.type)) ubx.add(sfrbxFrame(m), where);
+        if (isGnssCommMeas(t.type)) gnss_comm.addMeasurements(m, where);
+        if (isGnssCommEphem(t.type)) gnss_comm.addEphemeris(m, where);
       } catch (const std::exception& e) {
         throw std::runtime_error(bag.path() + ": " + where + ": " + e.what());
       }
@@ -330,8 +345,12 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
     }
     ++s.counts->read;
   });
-  if (!out.rawx_topic.empty()) {
-    out.raw_gnss = ubx.finish();
+  if (out.raw_observation_topic.empty() && !out.raw_ephemeris_topic.empty()) {
+    out.warnings.push_back(bag.path() + ": topic " + out.raw_ephemeris_topic +
+                           ": ephemerides without raw observations; not written");
+  }
+  if (!out.raw_observation_topic.empty()) {
+    out.raw_gnss = out.raw_gnss_source == "ublox_msgs" ? ubx.finish() : gnss_comm.finish();
     for (const std::string& w : out.raw_gnss->warnings) out.warnings.push_back(w);
   }
   finishBagDataset(out, streams, bag);

@@ -18,7 +18,8 @@ namespace giocal::import {
 
 /// Topics to read; empty: the one topic of the type (sensor_msgs/Imu; nav_msgs/Odometry or
 /// geometry_msgs/TwistStamped; sensor_msgs/NavSatFix), an error when several are present. Raw GNSS
-/// (ublox_msgs/RxmRAWX and RxmSFRBX) is read from the one topic of each type.
+/// (ublox_msgs/RxmRAWX and RxmSFRBX, or gnss_comm/GnssMeasMsg and GnssEphemMsg) is read from the
+/// one topic of each type.
 struct BagTopics {
   std::string imu, odom, fix;
 };
@@ -36,9 +37,11 @@ struct BagDataset {
   std::vector<ImuSample> imu;
   std::vector<OdomSample> odom;
   std::vector<RtkSolution> fixes;  // NavSatFix positions: quality 5 single, 4 DGPS/GBAS, 3 SBAS
-  // Raw GNSS of ublox_msgs/RxmRAWX (with RxmSFRBX for ephemerides), when the bag has them.
+  // Raw GNSS of ublox_msgs/RxmRAWX (with RxmSFRBX for ephemerides) or gnss_comm/GnssMeasMsg
+  // (with GnssEphemMsg), when the bag has them.
   std::optional<UbxLog> raw_gnss;
-  std::string rawx_topic, sfrbx_topic;
+  std::string raw_gnss_source;  // "ublox_msgs" or "gnss_comm"
+  std::string raw_observation_topic, raw_ephemeris_topic;
   TopicCounts imu_counts, odom_counts, fix_counts;
   ImuNoise imu_noise;  // from the message covariances where meaningful, else the defaults
   OdometerNoise odom_noise;

@@ -9,6 +9,7 @@
 
 #include "import/galileo_inav.h"
 #include "import/gps_lnav.h"
+#include "import/observation_log.h"
 #include "import/payload_reader.h"
 #include "import/ubx_signals.h"
 
@@ -20,31 +21,6 @@ constexpr uint8_t kClassRxm = 0x02;
 constexpr uint8_t kIdRawx = 0x15;
 constexpr uint8_t kIdSfrbx = 0x13;
 constexpr std::size_t kMaxEarlySubframes = 2000;
-
-// Per system, the signals seen, each as its C, L, D and S observation codes.
-void setObsTypes(ObsData& obs) {
-  std::map<char, std::set<std::pair<char, char>>> seen;
-  for (const ObsEpoch& e : obs.epochs) {
-    for (const SatObs& s : e.sats) {
-      for (const SignalObs& g : s.signals)
-        seen[static_cast<char>(s.sat.sys)].insert({g.band, g.attr});
-    }
-  }
-  for (const auto& [sys, signals] : seen) {
-    auto& types = obs.header.obs_types[sys];
-    for (const auto& [band, attr] : signals) {
-      for (char kind : {'C', 'L', 'D', 'S'}) types.push_back(std::string{kind, band, attr});
-    }
-  }
-}
-
-double medianInterval(const std::vector<ObsEpoch>& epochs) {
-  std::vector<double> dt;
-  for (std::size_t k = 1; k < epochs.size(); ++k) dt.push_back(epochs[k].t - epochs[k - 1].t);
-  if (dt.empty()) return 0.0;
-  std::nth_element(dt.begin(), dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2), dt.end());
-  return std::round(dt[dt.size() / 2] * 1e3) / 1e3;
-}
 
 void readSubframe(const UbxFrame& f, double t_rx, GpsLnavAssembler& lnav,
                   GalileoInavAssembler& inav, UbxLog& log) {
@@ -141,8 +117,7 @@ UbxLog UbxDecoder::finish(const UbxStreamCounts& stream) {
                            " navigation subframes rejected (bad CRC, not LNAV, part order)");
   }
   log.obs.header.marker = "UBX";
-  log.obs.header.interval = medianInterval(log.obs.epochs);
-  setObsTypes(log.obs);
+  describeObservations(log.obs);
   return log;
 }
 

@@ -96,8 +96,9 @@ TEST(BagImport, UbloxRawGnssReadsAsTheUbxLogDoes) {
   }
   const BagDataset d = readBagDataset(*openBag(dir.file("raw.bag")), {});
   ASSERT_TRUE(d.raw_gnss.has_value());
-  EXPECT_EQ(d.rawx_topic, "/ublox/rxmraw");
-  EXPECT_EQ(d.sfrbx_topic, "/ublox/rxmsfrb");
+  EXPECT_EQ(d.raw_gnss_source, "ublox_msgs");
+  EXPECT_EQ(d.raw_observation_topic, "/ublox/rxmraw");
+  EXPECT_EQ(d.raw_ephemeris_topic, "/ublox/rxmsfrb");
   const UbxLog& bag = *d.raw_gnss;
   ASSERT_EQ(bag.obs.epochs.size(), direct.obs.epochs.size());
   for (std::size_t k = 0; k < bag.obs.epochs.size(); k += 50) {
