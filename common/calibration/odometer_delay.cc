@@ -1,0 +1,162 @@
+#include "common/calibration/odometer_delay.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace giocal {
+
+namespace {
+
+constexpr long kMinSamples = 200;        // blocks: 40 s of driving
+constexpr double kBlock = 0.2;           // [s] odometer samples summed into one comparison
+constexpr double kMinYawRateRms = 0.05;  // [rad/s]: below it the lag is not seen
+constexpr std::size_t kMaxPending = 2000;
+constexpr double kMaxInterval = 0.5;
+constexpr std::size_t kFitHalfWidth = 10;  // [s] longer odometer intervals are gaps
+
+}  // namespace
+
+OdometerDelayEstimator::OdometerDelayEstimator(const Eigen::Vector3d& up_b, double max_delay_s,
+                                               double step_s)
+    : up_b_(up_b.normalized()), max_delay_s_(max_delay_s), step_s_(step_s) {
+  const auto lags = static_cast<std::size_t>(std::lround(2.0 * max_delay_s_ / step_s_)) + 1;
+  sum_x_.assign(lags, 0.0);
+  sum_xx_.assign(lags, 0.0);
+  sum_xw_.assign(lags, 0.0);
+}
+
+void OdometerDelayEstimator::addImu(double t, const Eigen::Vector3d& gyro_b) {
+  if (!std::isfinite(t) || !gyro_b.allFinite()) return;
+  if (!gyro_.empty() && t <= gyro_.back().t) return;
+  const double rate = up_b_.dot(gyro_b);
+  const double angle =
+      gyro_.empty() ? 0.0
+                    : gyro_.back().angle + 0.5 * (gyro_.back().rate + rate) * (t - gyro_.back().t);
+  gyro_.push_back({t, rate, angle});
+  while (!pending_.empty() && pending_.front().t1 + max_delay_s_ <= t) {
+    compare(pending_.front());
+    pending_.pop_front();
+  }
+  // Keep what the oldest waiting (or next) odometer sample can still ask for.
+  // (its interval reaches back by up to kMaxInterval).
+  const double keep_from =
+      (pending_.empty() ? t - kBlock - kMaxInterval : pending_.front().t0) - 2.0 * max_delay_s_;
+  while (gyro_.size() > 2 && gyro_[1].t < keep_from) gyro_.pop_front();
+}
+
+void OdometerDelayEstimator::addOdometer(double t, double yaw_rate) {
+  if (!std::isfinite(t) || !std::isfinite(yaw_rate)) return;
+  const double dt = t - last_odometer_t_;
+  last_odometer_t_ = t;
+  const double previous = last_yaw_rate_;
+  last_yaw_rate_ = yaw_rate;
+  if (!(dt > 0.0 && dt <= kMaxInterval)) {  // the first sample, or after a gap: a new block
+    block_ = {t, t, 0.0};
+    return;
+  }
+  block_.angle += 0.5 * (previous + yaw_rate) * dt;
+  block_.t1 = t;
+  if (block_.t1 - block_.t0 < kBlock) return;
+  if (pending_.size() >= kMaxPending) pending_.pop_front();  // the IMU stopped: bounded memory
+  pending_.push_back(block_);
+  block_ = {t, t, 0.0};
+}
+
+double OdometerDelayEstimator::angleAt(double t) const {
+  if (gyro_.empty() || t < gyro_.front().t || t > gyro_.back().t) return NAN;
+  std::size_t lo = 0, hi = gyro_.size() - 1;
+  while (hi - lo > 1) {
+    const std::size_t mid = (lo + hi) / 2;
+    (gyro_[mid].t <= t ? lo : hi) = mid;
+  }
+  const Rate &a = gyro_[lo], &b = gyro_[hi];
+  if (b.t - a.t > 0.1) return NAN;  // an IMU gap
+  // The rate is linear between samples: its integral is quadratic.
+  const double h = t - a.t, slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
+  return a.angle + a.rate * h + 0.5 * slope * h * h;
+}
+
+void OdometerDelayEstimator::compare(const Block& b) {
+  const double span = b.t1 - b.t0;
+  const double w = b.angle / span;
+  std::vector<double> x(sum_x_.size());
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    const double delay = -max_delay_s_ + static_cast<double>(j) * step_s_;
+    x[j] = (angleAt(b.t1 - delay) - angleAt(b.t0 - delay)) / span;
+    if (std::isnan(x[j])) return;  // every candidate sees the same blocks
+  }
+  ++n_;
+  sum_w_ += w;
+  sum_ww_ += w * w;
+  for (std::size_t j = 0; j < x.size(); ++j) {
+    sum_x_[j] += x[j];
+    sum_xx_[j] += x[j] * x[j];
+    sum_xw_[j] += x[j] * w;
+  }
+}
+
+OdometerDelay OdometerDelayEstimator::estimate() const {
+  OdometerDelay out;
+  out.samples = n_;
+  if (n_ < kMinSamples) return out;
+  const double n = static_cast<double>(n_);
+  const double sww = sum_ww_ - sum_w_ * sum_w_ / n;
+  // Residual of w = a x + b at each candidate delay.
+  std::vector<double> r(sum_x_.size());
+  std::size_t best = 0;
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    const double sxx = sum_xx_[j] - sum_x_[j] * sum_x_[j] / n;
+    const double sxw = sum_xw_[j] - sum_x_[j] * sum_w_ / n;
+    r[j] = sxx > 0.0 ? sww - sxw * sxw / sxx : std::numeric_limits<double>::infinity();
+    if (r[j] < r[best]) best = j;
+  }
+  const std::size_t mid = r.size() / 2;
+  out.yaw_rate_rms = std::sqrt(std::max(0.0, sum_xx_[mid] / n));
+  if (best < kFitHalfWidth || best + kFitHalfWidth >= r.size() || out.yaw_rate_rms < kMinYawRateRms)
+    return out;
+  // A parabola fitted over +-kFitHalfWidth grid points: the residual is jagged from point to
+  // point (each candidate averages other gyro samples), its trend is the delay's information.
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d aty = Eigen::Vector3d::Zero();
+  for (std::size_t j = best - kFitHalfWidth; j <= best + kFitHalfWidth; ++j) {
+    const double x = (static_cast<double>(j) - static_cast<double>(best)) * step_s_;
+    const Eigen::Vector3d row(1.0, x, x * x);
+    ata += row * row.transpose();
+    aty += row * (r[j] - r[best]);
+  }
+  const Eigen::Vector3d c = ata.ldlt().solve(aty);
+  if (!(c(2) > 0.0) || !c.allFinite()) return out;
+  const double half_width = static_cast<double>(kFitHalfWidth) * step_s_;
+  const double shift = std::clamp(-c(1) / (2.0 * c(2)), -half_width, half_width);
+  out.delay_s = -max_delay_s_ + static_cast<double>(best) * step_s_ + shift;
+  // R(d) = R_min + c2 (d - delay)^2 = R_min + (d - delay)^2 / (2 sigma^2) * 2 sigma_r^2.
+  const double sigma_r2 = std::max(r[best], 0.0) / (n - 3.0);
+  // The curvature of the whole searched range bounds the local one from below: wiggles of the
+  // residual from noise (the gyro's, over block edges) look like minima locally, a real delay
+  // raises the residual across the range.
+  Eigen::Matrix3d ata_all = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d aty_all = Eigen::Vector3d::Zero();
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    const double x = (static_cast<double>(j) - static_cast<double>(best)) * step_s_ - shift;
+    const Eigen::Vector3d row(1.0, x, x * x);
+    ata_all += row * row.transpose();
+    aty_all += row * (r[j] - r[best]);
+  }
+  const double c2 = std::min(c(2), ata_all.ldlt().solve(aty_all)(2));
+  if (!(c2 > 0.0)) return out;
+  out.sigma_s = std::sqrt(sigma_r2 / c2);
+  // A drive with little change of turn rate leaves the residual flat: another delay as good
+  // (within a chi-square step of 4) far from this one makes the estimate no estimate.
+  for (std::size_t j = 0; j < r.size(); ++j) {
+    const double d = -max_delay_s_ + static_cast<double>(j) * step_s_;
+    if (std::abs(d - out.delay_s) > 4.0 * out.sigma_s + half_width &&
+        r[j] - r[best] < 4.0 * sigma_r2)
+      return out;
+  }
+  out.valid = std::isfinite(out.sigma_s);
+  return out;
+}
+
+}  // namespace giocal
