@@ -176,6 +176,14 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
   }
   j["initialization"] = run.initialization;
   j["converged_at"] = run.converged_at;
+  if (run.odometer_delay.samples > 0) {
+    const OdometerDelay& d = run.odometer_delay;
+    j["odometer_delay"] = {{"valid", d.valid},
+                           {"delay_s", d.delay_s},
+                           {"sigma_s", d.sigma_s},
+                           {"blocks", d.samples},
+                           {"yaw_rate_rms", d.yaw_rate_rms}};
+  }
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/calibration/odometer_delay.h"
 #include "common/calibration/run_counter.h"
 #include "common/geodesy/wgs84.h"
 #include "common/imu/nav_state.h"
@@ -54,8 +55,11 @@ struct CalibrationRun {
   std::map<std::string, long> counters;          // Counter names -> tallies
   std::map<std::string, double> timing;          // wall time of parts of the run [s]
   std::map<std::string, double> converged_at;    // parameter -> data time it converged [s]
-  std::vector<std::string> warnings;             // bad data met on the way, divergence (capped)
-  std::map<std::string, std::string> options;    // the options in effect, defaults included
+  // The odometer's delay against the IMU seen in the yaw rate both measure, after the dataset's
+  // time_offsets (OdometerDelayEstimator); samples 0 when not computed.
+  OdometerDelay odometer_delay;
+  std::vector<std::string> warnings;           // bad data met on the way, divergence (capped)
+  std::map<std::string, std::string> options;  // the options in effect, defaults included
   // "ok", or "partial: <why>" when the data after a divergence or an IMU gap allowed no restart:
   // the calibration is then the last one before it.
   std::string status = "ok";

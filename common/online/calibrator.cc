@@ -35,7 +35,8 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
       factory_(std::move(factory)),
       sink_(sink),
       reorder_(options.online.reorder_lag_s),
-      convergence_(options.online.convergence, options.hold_p_b_m_z) {
+      convergence_(options.online.convergence, options.hold_p_b_m_z),
+      odometer_delay_(dataset.initial_calibration.mean.q_b_m.toRotationMatrix().col(2)) {
   run_.estimator = std::move(estimator);
   run_.p_b_m_z =
       options.hold_p_b_m_z
@@ -140,6 +141,7 @@ void Calibrator::release(Datum& d) {
       if (std::isnan(t_imu_first_)) t_imu_first_ = s.t;
       t_imu_last_ = s.t;
       buf_.imu.push_back(s);
+      odometer_delay_.addImu(s.t, s.gyro);
       frontier_ = s.t;
       break;
     }
@@ -157,6 +159,7 @@ void Calibrator::release(Datum& d) {
                                           "alone through it");
       }
       buf_.odom.push_back(d.odom);
+      odometer_delay_.addOdometer(d.odom.t, d.odom.w);
       frontier_ = d.odom.t;
       break;
     case Kind::kPosition:

@@ -17,6 +17,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/calibration_run.h"
 #include "common/calibration/initial_state.h"
+#include "common/calibration/odometer_delay.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/online/convergence.h"
 #include "common/online/estimator_core.h"
@@ -116,6 +117,7 @@ class Calibrator {
   std::deque<ObsEpoch> rover_;  // rover epochs not yet processed
   std::unique_ptr<EstimatorCore> core_;
   ConvergenceMonitor convergence_;
+  OdometerDelayEstimator odometer_delay_;  // checks the odometer's stamps against the IMU's
   bool diverged_ = false, finishing_ = false, done_said_ = false;
   double t_first_ = NAN, frontier_ = -INFINITY;
   double t_from_ = -INFINITY;          // initialization searches from here

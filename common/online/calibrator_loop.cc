@@ -17,6 +17,10 @@
 namespace giocal {
 namespace {
 
+// An odometer delay is worth a word when it is this large and known this well [s].
+constexpr double kDelayToTell = 0.01;
+constexpr double kDelaySigmaToTell = 0.01;
+
 /// The dataset with its calibration prior replaced by an estimate (for a re-initialization).
 DatasetDescription withPrior(DatasetDescription d, const CalibrationEstimate& e) {
   CalibrationPrior& p = d.initial_calibration;
@@ -309,6 +313,15 @@ void Calibrator::finish() {
   if (run_.latest) {
     for (const std::string& w : weakDirections(*run_.latest, original_.initial_calibration))
       run_.warn(w);
+  }
+  run_.odometer_delay = odometer_delay_.estimate();
+  const OdometerDelay& d = run_.odometer_delay;
+  if (d.valid && d.sigma_s < kDelaySigmaToTell && std::abs(d.delay_s) > kDelayToTell &&
+      std::abs(d.delay_s) > 3.0 * d.sigma_s) {
+    run_.warn("the odometer's stamps are " + fixedText(1e3 * std::abs(d.delay_s), 0) + " +- " +
+              fixedText(1e3 * d.sigma_s, 0) + " ms " + (d.delay_s > 0 ? "late" : "early") +
+              " against the IMU's (the yaw rate both measure): set time_offsets: {odometer: " +
+              fixedText(dataset_.time_offsets.odometer - d.delay_s, 3) + "} in dataset.yaml");
   }
   run_.t_first_rover_epoch = t_rover_first_;
   if (!std::isnan(t_imu_first_) && !std::isnan(t_rover_first_)) {
