@@ -14,7 +14,7 @@
 namespace giocal {
 
 struct OdometerDelay {
-  bool valid = false;    // enough turning, a minimum inside the searched range
+  bool valid = false;    // enough turning, a minimum inside the searched range, sigma under 20 ms
   double delay_s = 0.0;  // > 0: an odometer stamp t measures the motion at t - delay_s
   double sigma_s = 0.0;
   long samples = 0;           // odometer blocks compared
@@ -25,7 +25,7 @@ class OdometerDelayEstimator {
  public:
   /// `up_b`: the vehicle's up axis in the IMU frame (R_b_m e_z); delays within +-max_delay_s are
   /// searched on a grid of step_s.
-  explicit OdometerDelayEstimator(const Eigen::Vector3d& up_b, double max_delay_s = 0.15,
+  explicit OdometerDelayEstimator(const Eigen::Vector3d& up_b, double max_delay_s = 0.5,
                                   double step_s = 0.002);
   /// IMU samples in rising time (others are ignored).
   void addImu(double t, const Eigen::Vector3d& gyro_b);
