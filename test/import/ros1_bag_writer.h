@@ -101,4 +101,16 @@ class BagWriter {
   rosbag::Bag bag_;
 };
 
+// A robot standing still beside the data under test: /imu (gravity only) and /odom (zero) at 10 Hz
+// for `seconds` from t0 (seconds since 1970).
+inline void writeStandingRobot(BagWriter& w, double t0, double seconds) {
+  for (int k = 0; k < static_cast<int>(seconds * 10.0); ++k) {
+    const double t = t0 + 0.1 * k;
+    RosMessage imu;
+    imu.set("linear_acceleration.z", 9.8);
+    w.write("/imu", "sensor_msgs/Imu", kImuDef, imu, t, t);
+    w.write("/odom", "nav_msgs/Odometry", kOdomDef, RosMessage{}, t, t);
+  }
+}
+
 }  // namespace giocal::import::test_bags

@@ -146,13 +146,7 @@ TEST(BagImport, GnssCommMessagesRoundTripARealReceiversObservations) {
       const double t = e.t + 315964800.0 - 18.0;
       w.write("/ublox_driver/range_meas", "gnss_comm/GnssMeasMsg", kMeasDef, measMessage(e), t, t);
     }
-    for (int k = 0; k < 1300; ++k) {
-      const double tk = t0_unix + 0.1 * k;
-      RosMessage imu;
-      imu.set("linear_acceleration.z", 9.8);
-      w.write("/imu", "sensor_msgs/Imu", kImuDef, imu, tk, tk);
-      w.write("/odom", "nav_msgs/Odometry", kOdomDef, RosMessage{}, tk, tk);
-    }
+    writeStandingRobot(w, t0_unix, 130.0);
   }
   const BagDataset d = readBagDataset(*openBag(dir.file("gnss_comm.bag")), {});
   ASSERT_TRUE(d.raw_gnss.has_value());

@@ -86,13 +86,7 @@ TEST(BagImport, UbloxRawGnssReadsAsTheUbxLogDoes) {
       if (f.id == 0x13)
         w.write("/ublox/rxmsfrb", "ublox_msgs/RxmSFRBX", kSfrbxDef, sfrbxMessage(f), t, t);
     }
-    for (int k = 0; k < 1000; ++k) {
-      const double tk = t0_unix + 0.1 * k;
-      RosMessage imu;
-      imu.set("linear_acceleration.z", 9.8);
-      w.write("/imu", "sensor_msgs/Imu", kImuDef, imu, tk, tk);
-      w.write("/odom", "nav_msgs/Odometry", kOdomDef, RosMessage{}, tk, tk);
-    }
+    writeStandingRobot(w, t0_unix, 100.0);
   }
   const BagDataset d = readBagDataset(*openBag(dir.file("raw.bag")), {});
   ASSERT_TRUE(d.raw_gnss.has_value());
