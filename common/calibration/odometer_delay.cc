@@ -40,8 +40,7 @@ void OdometerDelayEstimator::addImu(double t, const Eigen::Vector3d& gyro_b) {
     compare(pending_.front());
     pending_.pop_front();
   }
-  // Keep what the oldest waiting (or next) odometer sample can still ask for.
-  // (its interval reaches back by up to kMaxInterval).
+  // Keep what the oldest waiting (or the next) block can still ask for.
   const double keep_from =
       (pending_.empty() ? t - kBlock - kMaxInterval : pending_.front().t0) - 2.0 * max_delay_s_;
   while (gyro_.size() > 2 && gyro_[1].t < keep_from) gyro_.pop_front();

@@ -29,7 +29,8 @@ class OdometerDelayEstimator {
                                   double step_s = 0.002);
   /// IMU samples in rising time (others are ignored).
   void addImu(double t, const Eigen::Vector3d& gyro_b);
-  /// Odometer samples; compared once the IMU covers t + max_delay_s.
+  /// Odometer samples in rising time, summed into blocks; a block is compared once the IMU covers
+  /// its end + max_delay_s.
   void addOdometer(double t, double yaw_rate);
   OdometerDelay estimate() const;
 
