@@ -14,6 +14,7 @@
 #include "common/io/sensor_logs.h"
 #include "common/io/time_series_stats.h"
 #include "common/math/rotation.h"
+#include "common/odometer/gyro_yaw_rate.h"
 
 namespace giocal {
 
@@ -66,7 +67,16 @@ void runCheck(const std::string& folder, std::ostream& out) {
   out << "dataset " << folder << "\n";
   std::vector<std::string> warnings;
   const std::vector<ImuSample> imu = readImuCsv(d.pathOf(d.imu), &warnings);
-  const std::vector<OdomSample> odom = readOdomCsv(d.pathOf(d.odom), &warnings);
+  std::vector<OdomSample> odom = readOdomCsv(d.pathOf(d.odom), &warnings);
+  if (!d.odom_noise.measures_yaw_rate && !imu.empty()) {
+    // A speed-only odometer: the turn rate about gravity's axis stands for w, whatever the
+    // mounting in dataset.yaml (which the mounting check below is to test).
+    Eigen::Vector3d f = Eigen::Vector3d::Zero();
+    for (const ImuSample& s : imu) f += s.acc;
+    OdometerCalibration up;
+    up.q_b_m = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), f.normalized());
+    for (OdomSample& o : odom) o.w = gyroYawRate(imu, o.t, up);
+  }
   printStats(out, d.imu, timesOf(imu));
   printStats(out, d.odom, timesOf(odom));
   if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));

@@ -46,6 +46,8 @@ const char* kUsage =
     "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite] [--quiet]\n"
     "  giocal import    --bag <file.bag> [--imu-topic t] [--odom-topic t] [--fix-topic t]\n"
     "                   --out <dir> [--overwrite] [--quiet]\n"
+    "  giocal import    --i2nav-imu <imu.txt> [--i2nav-pos <gnss.pos>] [--i2nav-nav <truth.nav>]\n"
+    "                   [--gps-week n] [--lever-arm x,y,z] --out <dir> [--overwrite]\n"
     "  giocal export    --trajectory <trajectory.csv> --tum <file.txt> [--origin x,y,z] "
     "[--overwrite]\n"
     "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
@@ -205,12 +207,21 @@ int runImportCommand(int argc, char** argv) {
       "odom-topic", po::value<std::string>()->default_value(""),
       "nav_msgs/Odometry or geometry_msgs/TwistStamped topic")(
       "fix-topic", po::value<std::string>()->default_value(""), "sensor_msgs/NavSatFix topic")(
+      "i2nav-imu", po::value<std::string>()->default_value(""),
+      "i2Nav IMU text (increments, odometer speed column)")(
+      "i2nav-pos", po::value<std::string>()->default_value(""), "i2Nav GNSS position file")(
+      "i2nav-nav", po::value<std::string>()->default_value(""), "i2Nav reference .nav file")(
+      "gps-week", po::value<int>()->default_value(-1),
+      "GPS week of the i2Nav IMU's first row (default: the .nav's)")(
+      "lever-arm", po::value<std::string>()->default_value(""),
+      "x,y,z: GNSS antenna in the i2Nav IMU frame (forward-right-down) [m]")(
       "out", po::value<std::string>()->required(), "output folder")(
       "overwrite", "replace the outputs of an earlier import in --out")("quiet",
                                                                         "no progress line");
   const po::variables_map vm = giocal::parseCommand(
       argc, argv, opts,
-      "giocal import: a ROS 1 or ROS 2 bag, or a u-blox UBX log, to a dataset folder giocal reads",
+      "giocal import: a ROS 1 or ROS 2 bag, a u-blox UBX log or i2Nav text logs, to a dataset "
+      "folder giocal reads",
       "giocal import --bag test1.bag --out /tmp/husky");
   giocal::ImportJob job;
   job.ubx = vm["ubx"].as<std::string>();
@@ -218,6 +229,11 @@ int runImportCommand(int argc, char** argv) {
   job.imu_topic = vm["imu-topic"].as<std::string>();
   job.odom_topic = vm["odom-topic"].as<std::string>();
   job.fix_topic = vm["fix-topic"].as<std::string>();
+  job.i2nav_imu = vm["i2nav-imu"].as<std::string>();
+  job.i2nav_pos = vm["i2nav-pos"].as<std::string>();
+  job.i2nav_nav = vm["i2nav-nav"].as<std::string>();
+  job.gps_week = vm["gps-week"].as<int>();
+  job.lever_arm = vm["lever-arm"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") > 0;
   job.quiet = vm.count("quiet") > 0;

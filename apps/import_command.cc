@@ -18,14 +18,10 @@
 #include "common/io/sensor_logs.h"
 #include "common/math/rotation.h"
 #include "import/bag_dataset.h"
+#include "apps/import_i2nav.h"
 #include "import/ubx_log.h"
 
 namespace giocal {
-namespace {
-
-const std::vector<std::string> kUbxFiles{"rover.obs", "nav.rnx", "import.json"};
-const std::vector<std::string> kBagFiles{"imu.csv", "odom.csv",     "gnss.pos",   "rover.obs",
-                                         "nav.rnx", "dataset.yaml", "import.json"};
 
 void refuseToOverwrite(const ImportJob& job, const std::vector<std::string>& files) {
   if (job.overwrite) return;
@@ -35,6 +31,13 @@ void refuseToOverwrite(const ImportJob& job, const std::vector<std::string>& fil
     }
   }
 }
+
+namespace {
+
+const std::vector<std::string> kUbxFiles{"rover.obs", "nav.rnx", "import.json"};
+const std::vector<std::string> kBagFiles{"imu.csv", "odom.csv",     "gnss.pos",   "rover.obs",
+                                         "nav.rnx", "dataset.yaml", "import.json"};
+
 
 nlohmann::ordered_json countsJson(const import::TopicCounts& c) {
   return {{"topic", c.topic},
@@ -237,11 +240,14 @@ log.unsetf(std::ios::fixed);
 }  // namespace
 
 void runImport(const ImportJob& job, std::ostream& log) {
-  if (job.ubx.empty() == job.bag.empty()) throw std::runtime_error("give one of --ubx and --bag");
+  const int sources = !job.ubx.empty() + !job.bag.empty() + !job.i2nav_imu.empty();
+  if (sources != 1) throw std::runtime_error("give one of --ubx, --bag and --i2nav-imu");
   if (!job.ubx.empty()) {
     importUbx(job, log);
-  } else {
+  } else if (!job.bag.empty()) {
     importBag(job, log);
+  } else {
+    importI2nav(job, log);
   }
 }
 

@@ -52,8 +52,7 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
       frame_(init.origin_e),
       motion_(detectorOptions(options, dataset.imu_noise)),
       t_(init.x.t),
-      motion_fed_t_(init.x.t),
-      chi2_odometer_(chi2Quantile(options.chi2_probability, 6)) {
+      motion_fed_t_(init.x.t) {
   // Navigation first, in the order of the IMU residual (p, theta, v, b_a, b_g), then calibration.
   // A copy, not a block: P may be a temporary converted from a fixed-size matrix.
   const auto blk = [](const Eigen::MatrixXd& P, int i, int n) -> Eigen::MatrixXd {
@@ -253,13 +252,9 @@ void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
   }
   s_.clone(nav_var::kP, ekf_var::kOdoP);
   s_.clone(nav_var::kQ, ekf_var::kOdoQ);
-  OdometerPreintegrationNoise noise;
-  noise.speed_sigma = dataset_.odom_noise.speed_sigma;
-  noise.yaw_rate_sigma = dataset_.odom_noise.yaw_rate_sigma;
-  noise.lateral_speed_density = options_.models.lateral_speed_density;
-  noise.tilt_rate_density = options_.models.tilt_rate_density;
-  odo_pre_ = std::make_unique<OdometerPreintegration>(noise, s_.value(block::kSv)[0],
-                                                      s_.value(block::kSw)[0]);
+  odo_pre_ = std::make_unique<OdometerPreintegration>(
+      odometerPreintegrationNoise(dataset_.odom_noise, options_.models), s_.value(block::kSv)[0],
+      s_.value(block::kSw)[0]);
   last_odo_ = sample;
   interval_moved_ = false;
 }
@@ -289,7 +284,8 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     if (interval_done) {
       std::shared_ptr<const MeasurementModel> model =
           planar(std::make_shared<OdometerPreintegrationModel>(
-              std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_))));
+              std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_)),
+              !dataset_.odom_noise.measures_yaw_rate));
       if (!interval_moved_) model = std::make_shared<StandstillProjection>(model);
       step.interval = true;
       step.reopened = !options_.hold_calibration &&
@@ -298,7 +294,8 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
       const UpdateResult r = update(*model,
                                     {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ,
                                      block::kSv, block::kSw, block::kPbm, block::kQbm},
-                                    chi2_odometer_, 0.0, options_.odometer_iterations);
+                                    chi2Quantile(options_.chi2_probability, model->residualSize()),
+                                    0.0, options_.odometer_iterations);
       step.rejected = !r.accepted;
       odometer_rejected_in_row_ =
           step.rejected && !step.reopened ? odometer_rejected_in_row_ + 1 : 0;

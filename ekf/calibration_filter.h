@@ -121,7 +121,6 @@ class CalibrationFilter {
   double motion_fed_t_ = 0.0;
   std::unique_ptr<ImuPreintegration> pending_;
   double pending_t_ = 0.0;
-  double chi2_odometer_ = 0.0;
   std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
   OdomSample last_odo_;
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval

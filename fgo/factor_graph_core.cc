@@ -239,20 +239,17 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
                 {prev.p, prev.q, prev.v, prev.ba, prev.bg, e.p, e.q, e.v, e.ba, e.bg},
                 0.0,
                 tagged("imu", e.k)});
-  OdometerPreintegrationNoise on;
-  on.speed_sigma = in_.description.odom_noise.speed_sigma;
-  on.yaw_rate_sigma = in_.description.odom_noise.yaw_rate_sigma;
-  on.lateral_speed_density = o_.models.lateral_speed_density;
-  on.tilt_rate_density = o_.models.tilt_rate_density;
-  auto odo =
-      std::make_shared<OdometerPreintegration>(on, w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
+  auto odo = std::make_shared<OdometerPreintegration>(
+      odometerPreintegrationNoise(in_.description.odom_noise, o_.models), w_.value(prev.sv)[0],
+      w_.value(prev.sw)[0]);
   // Motion constraints and whether the robot stood still over the interval.
   feedMotion(e.t, x_prev.b_g);
   e.still = motion_.isStatic();
   if (in_.odom.front().t <= prev.t) {
     odo->integrateSamples(in_.odom, prev.t, e.t);
     std::shared_ptr<const MeasurementModel> model =
-        planar(std::make_shared<OdometerPreintegrationModel>(odo));
+        planar(std::make_shared<OdometerPreintegrationModel>(
+            odo, !in_.description.odom_noise.measures_yaw_rate));
     if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
     w_.addFactor({model,
                   {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm},

@@ -5,6 +5,7 @@
 
 #include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
+#include "common/odometer/gyro_yaw_rate.h"
 #include "common/io/sensor_logs.h"
 
 namespace giocal {
@@ -31,6 +32,10 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::st
   for (OdomSample& s : in.odom) s.t += d.time_offsets.odometer;
   if (in.imu.size() < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (in.odom.empty()) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
+  if (!d.odom_noise.measures_yaw_rate) {
+    // A speed-only odometer turns with the gyro (as the online calibrator's samples do).
+    for (OdomSample& s : in.odom) s.w = gyroYawRate(in.imu, s.t, d.initial_calibration.mean);
+  }
   const std::string truth = folder + "/truth_calib.yaml";
   if (std::filesystem::exists(truth)) in.truth = readTruthCalibration(truth);
   if (!positions.empty()) {

@@ -1,5 +1,6 @@
 #include "common/calibration/weak_directions.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 
@@ -33,26 +34,30 @@ const char* motionThatInforms(int k) {
 }
 
 std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationPrior& prior,
-                            double fraction) {
+                            const std::vector<int>& held, double fraction) {
   // calibration.csv's order: s_v, s_w, p_b_m x, y, z [m], roll, pitch, yaw [deg].
   const Eigen::Matrix<double, 8, 1> sd = final.sigma();
   const Eigen::Matrix<double, 8, 1> sd0 =
       CalibrationEstimate{0.0, prior.mean, priorCalibrationCovariance(prior)}.sigma();
   std::vector<int> out;
   for (int k = 0; k < 8; ++k) {
-    if (k == calib_index::kP + 2 || sd0(k) <= 0.0 || !(sd(k) > fraction * sd0(k))) continue;
+    if (k == calib_index::kP + 2 || std::count(held.begin(), held.end(), k) || sd0(k) <= 0.0 ||
+        !(sd(k) > fraction * sd0(k))) {
+      continue;
+    }
     out.push_back(k);
   }
   return out;
 }
 
 std::vector<std::string> weakDirections(const CalibrationEstimate& final,
-                                        const CalibrationPrior& prior, double fraction) {
+                                        const CalibrationPrior& prior, const std::vector<int>& held,
+                                        double fraction) {
   const Eigen::Matrix<double, 8, 1> sd = final.sigma();
   const Eigen::Matrix<double, 8, 1> sd0 =
       CalibrationEstimate{0.0, prior.mean, priorCalibrationCovariance(prior)}.sigma();
   std::vector<std::string> out;
-  for (const int k : weakStates(final, prior, fraction)) {
+  for (const int k : weakStates(final, prior, held, fraction)) {
     char buf[600];
     std::snprintf(buf, sizeof buf,
                   "%s is weakly observed on this drive: 1-sigma %.3g%s against the prior's %.3g%s. "

@@ -14,14 +14,17 @@ namespace giocal {
 /// `final` is above `fraction` of the prior's: the data then add less than 1/fraction^2 - 1 times
 /// the prior's information (10 times at 0.3), the estimate stays near the guess, and along such a
 /// direction the reported sigma has been measured too small (docs/results.md). p_b_m.z is left
-/// out: it is unobservable under planar motion and summary.json says how it was treated.
+/// out: it is unobservable under planar motion and summary.json says how it was treated; so are
+/// the `held` states (calibration.csv order), which the run does not calibrate (s_w with a
+/// speed-only odometer).
 std::vector<std::string> weakDirections(const CalibrationEstimate& final,
-                                        const CalibrationPrior& prior, double fraction = 0.3);
+                                        const CalibrationPrior& prior,
+                                        const std::vector<int>& held = {}, double fraction = 0.3);
 
 /// The indices (calibration.csv order, calibrationStateName()) of the states weakDirections()
 /// names.
 std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationPrior& prior,
-                            double fraction = 0.3);
+                            const std::vector<int>& held = {}, double fraction = 0.3);
 
 /// "s_v", "s_w", "p_b_m.x", ..., "yaw of q_b_m" for index 0..7 of calibration.csv's order, and
 /// the unit of its sigma (" m", " deg" or "").

@@ -93,6 +93,7 @@ DatasetDescription readDatasetDescription(const std::string& folder) {
   d.odom_noise.speed_sigma = y.number("odometer.speed_sigma", 0.0, kMaxNoise);
   d.odom_noise.yaw_rate_sigma = y.number("odometer.yaw_rate_sigma", 0.0, kMaxNoise);
   d.odom_noise.scale_random_walk = y.numberOr("odometer.scale_random_walk", 0.0, 0.0, kMaxNoise);
+  d.odom_noise.measures_yaw_rate = y.flagOr("odometer.measures_yaw_rate", true);
 
   d.p_b_g = y.vector3("gnss.p_b_g", -kMaxLever, kMaxLever);
   if (y.has("gnss.base_position_ecef")) {
@@ -150,6 +151,10 @@ void writeDatasetDescription(const DatasetDescription& d) {
   out << Key << "yaw_rate_sigma" << Value << d.odom_noise.yaw_rate_sigma << Comment("rad/s");
   out << Key << "scale_random_walk" << Value << d.odom_noise.scale_random_walk
       << Comment("1/sqrt(s)");
+  if (!d.odom_noise.measures_yaw_rate) {
+    out << Key << "measures_yaw_rate" << Value << false
+        << Comment("speed only: odom.csv's w is not read, s_w is not calibrated");
+  }
   out << EndMap;
 
   out << Key << "gnss" << Value << BeginMap;

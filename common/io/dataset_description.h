@@ -25,6 +25,9 @@ struct OdometerNoise {
   double speed_sigma = 0.01;        // white noise of the measured speed [m/s]
   double yaw_rate_sigma = 0.01745;  // white noise of the measured yaw rate [rad/s]
   double scale_random_walk = 0.0;   // random walk of s_v and s_w [1/sqrt(s)]
+  // false: a speed-only odometer (a car's wheel speed, an i2Nav text log); odom.csv's w column
+  // is not read, the heading change comes from the gyro and s_w stays at its prior.
+  bool measures_yaw_rate = true;
 };
 
 /// Prior on the calibration: the initial guess and its 1-sigma.

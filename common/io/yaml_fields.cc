@@ -153,6 +153,20 @@ std::string YamlFields::textOr(const std::string& key, const std::string& fallba
   return has(key) ? text(key) : in_effect_[key] = fallback;
 }
 
+bool YamlFields::flagOr(const std::string& key, bool fallback) const {
+  if (!has(key)) {
+    in_effect_[key] = fallback ? "true" : "false";
+    return fallback;
+  }
+  const YAML::Node node = find(key);
+  const std::string v = node.IsScalar() ? node.as<std::string>() : "";
+  if (v != "true" && v != "false") {
+    throw DataError(path_, lineOf(node), "'" + key + "' must be true or false");
+  }
+  in_effect_[key] = v;
+  return v == "true";
+}
+
 std::vector<std::string> YamlFields::textList(const std::string& key, bool allow_empty) const {
   const YAML::Node node = find(key);
   if (node.IsScalar()) return {node.as<std::string>()};

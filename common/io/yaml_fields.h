@@ -29,6 +29,8 @@ class YamlFields {
   double numberOr(const std::string& key, double fallback, double min, double max) const;
   std::string text(const std::string& key) const;
   std::string textOr(const std::string& key, const std::string& fallback) const;
+  /// true or false; throws DataError naming the line for anything else.
+  bool flagOr(const std::string& key, bool fallback) const;
   std::vector<std::string> textList(const std::string& key, bool allow_empty = false) const;
   Eigen::Vector3d vector3(const std::string& key) const;
   Eigen::Vector3d vector3(const std::string& key, double min, double max) const;

@@ -17,30 +17,44 @@ const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
   return kBlocks;
 }
 
-Eigen::Matrix<double, 6, 6> OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {
-  return whitener(pre_->covarianceAt(s_v, s_w), name());
+Eigen::MatrixXd OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {
+  return whitener(pre_->covarianceAt(s_v, s_w).topLeftCorner(rows_, rows_), name());
+}
+
+OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odometer,
+                                                        const ModelOptions& models) {
+  OdometerPreintegrationNoise n;
+  n.speed_sigma = odometer.speed_sigma;
+  n.yaw_rate_sigma = odometer.yaw_rate_sigma;
+  n.lateral_speed_density = models.lateral_speed_density;
+  n.tilt_rate_density = models.tilt_rate_density;
+  return n;
 }
 
 void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
                                            std::vector<Eigen::MatrixXd>* jacobians) const {
   OdometerCalibration c;
   c.s_v = params[4][0];
-  c.s_w = params[5][0];
+  // A speed-only odometer's heading came from the gyro, divided by 1 + s_w at the interval's
+  // start: the integral is evaluated there, and nothing here depends on (or measures) s_w.
+  c.s_w = rows_ == 6 ? params[5][0] : pre_->linSw();
   c.p_b_m = vec3At(params[6]);
   c.q_b_m = quatAt(params[7]);
   const OdometerResidual r =
       pre_->evaluate(vec3At(params[0]), quatAt(params[1]), vec3At(params[2]), quatAt(params[3]), c);
-  const Eigen::Matrix<double, 6, 6> W = whitenerAt(c.s_v, c.s_w);
-  residual = W * r.r;
+  const Eigen::MatrixXd W = whitenerAt(c.s_v, c.s_w);
+  const int n = rows_;
+  const Eigen::VectorXd rr = r.r.head(n);
+  residual = W * rr;
   if (jacobians) {
-    *jacobians = {W * r.J_p_i, W * r.J_q_i, W * r.J_p_j,   W * r.J_q_j,
-                  W * r.J_s_v, W * r.J_s_w, W * r.J_p_b_m, W * r.J_q_b_m};
+    *jacobians = {W * r.J_p_i.topRows(n),   W * r.J_q_i.topRows(n),  W * r.J_p_j.topRows(n),
+                  W * r.J_q_j.topRows(n),   W * r.J_s_v.topRows(n),  W * r.J_s_w.topRows(n),
+                  W * r.J_p_b_m.topRows(n), W * r.J_q_b_m.topRows(n)};
     // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
     const double h = 1e-6;
-    (*jacobians)[4] +=
-        (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * r.r / (2 * h);
-    (*jacobians)[5] +=
-        (whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h)) * r.r / (2 * h);
+    (*jacobians)[4] += (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * rr / (2 * h);
+    (*jacobians)[5] += (whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h)) * rr / (2 * h);
+    if (n == 3) (*jacobians)[5].setZero();
   }
 }
 

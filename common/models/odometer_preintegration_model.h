@@ -11,6 +11,8 @@
 
 #include <memory>
 
+#include "common/io/dataset_description.h"
+#include "common/io/model_options.h"
 #include "common/models/measurement_model.h"
 #include "common/odometer/odometer_preintegration.h"
 
@@ -18,20 +20,31 @@ namespace giocal {
 
 class OdometerPreintegrationModel : public MeasurementModel {
  public:
-  explicit OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration> pre)
-      : pre_(std::move(pre)) {}
-  std::string name() const override { return "odometer_preintegration"; }
+  /// position_only: a speed-only odometer, whose heading change was taken from the gyro: only
+  /// the position rows are a measurement, evaluated at the s_w of the interval's start (the
+  /// s_w block is not seen; its Jacobian is zero).
+  explicit OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration> pre,
+                                       bool position_only = false)
+      : pre_(std::move(pre)), rows_(position_only ? 3 : 6) {}
+  std::string name() const override {
+    return rows_ == 6 ? "odometer_preintegration" : "odometer_speed_preintegration";
+  }
   /// p@i, q@i, p@j, q@j, s_v@i, s_w@i, p_b_m, q_b_m
   const std::vector<StateBlock>& blocks() const override;
-  int residualSize() const override { return 6; }
+  int residualSize() const override { return rows_; }
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
                 std::vector<Eigen::MatrixXd>* jacobians) const override;
-  Eigen::MatrixXd covariance() const override { return Eigen::MatrixXd::Identity(6, 6); }
+  Eigen::MatrixXd covariance() const override { return Eigen::MatrixXd::Identity(rows_, rows_); }
 
  private:
-  /// W with W^T W = covariance^-1 at these scales.
-  Eigen::Matrix<double, 6, 6> whitenerAt(double s_v, double s_w) const;
+  /// W with W^T W = covariance^-1 (of the rows in use) at these scales.
+  Eigen::MatrixXd whitenerAt(double s_v, double s_w) const;
   std::shared_ptr<const OdometerPreintegration> pre_;
+  int rows_;
 };
+
+/// The integral measurement's noise: the odometer's own, and the models' out-of-plane noise.
+OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odometer,
+                                                        const ModelOptions& models);
 
 }  // namespace giocal

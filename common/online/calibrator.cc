@@ -8,6 +8,7 @@
 #include "common/calibration/weak_directions.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
+#include "common/odometer/gyro_yaw_rate.h"
 #include "common/online/busy_timer.h"
 
 namespace giocal {
@@ -26,6 +27,18 @@ const char* stateName(CalibratorState s) {
   return "unknown";
 }
 
+namespace {
+
+// The calibration states (calibration.csv order) a run does not calibrate.
+std::vector<int> heldStates(const CalibrationOptions& options, const DatasetDescription& d) {
+  std::vector<int> held;
+  if (!d.odom_noise.measures_yaw_rate) held.push_back(calib_index::kSw);
+  if (options.hold_p_b_m_z) held.push_back(calib_index::kP + 2);
+  return held;
+}
+
+}  // namespace
+
 Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
                        const Eigen::Vector3d& base_e, const CalibrationOptions& options,
                        CoreFactory factory, RunSink* sink)
@@ -35,7 +48,7 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
       factory_(std::move(factory)),
       sink_(sink),
       reorder_(options.online.reorder_lag_s),
-      convergence_(options.online.convergence, options.hold_p_b_m_z),
+      convergence_(options.online.convergence, heldStates(options, dataset)),
       odometer_delay_(dataset.initial_calibration.mean.q_b_m.toRotationMatrix().col(2)) {
   run_.estimator = std::move(estimator);
   run_.p_b_m_z =
@@ -69,7 +82,9 @@ void Calibrator::addImu(const ImuSample& s) {
 
 void Calibrator::addOdometer(const OdomSample& s) {
   BusyTimer busy(busy_s_);
-  if (!std::isfinite(s.t) || !std::isfinite(s.v) || !std::isfinite(s.w)) {
+  // A speed-only odometer's w is not read (NaN is what a driver without one sends).
+  const bool w_ok = std::isfinite(s.w) || !dataset_.odom_noise.measures_yaw_rate;
+  if (!std::isfinite(s.t) || !std::isfinite(s.v) || !w_ok) {
     dropped(Counter::kNonFiniteSamples, s.t, "odometer sample with NaN or infinite values");
     return;
   }
@@ -158,8 +173,13 @@ void Calibrator::release(Datum& d) {
                                           " (calibration.max_odometer_gap_s): the IMU navigates "
                                           "alone through it");
       }
+      if (dataset_.odom_noise.measures_yaw_rate) {
+        odometer_delay_.addOdometer(d.odom.t, d.odom.w);
+      } else {
+        // The IMU up to this time has been released before it (time order).
+        d.odom.w = gyroYawRate(buf_.imu, d.odom.t, dataset_.initial_calibration.mean);
+      }
       buf_.odom.push_back(d.odom);
-      odometer_delay_.addOdometer(d.odom.t, d.odom.w);
       frontier_ = d.odom.t;
       break;
     case Kind::kPosition:
@@ -228,7 +248,7 @@ CalibratorHealth Calibrator::health() const {
       h.converged.push_back(calibrationStateName(k));
   }
   if (run_.latest) {
-    for (const int k : weakStates(*run_.latest, original_.initial_calibration))
+    for (const int k : weakStates(*run_.latest, original_.initial_calibration, convergence_.held()))
       h.weak.push_back(calibrationStateName(k));
   }
   h.counters = run_.counters;

@@ -235,7 +235,7 @@ void Calibrator::onEstimate(const CalibrationEstimate& e) {
         open += std::string(open.empty() ? "" : ", ") + calibrationStateName(k);
     }
     // Each with the motion that would inform it (as `giocal observability` advises).
-    for (const int k : weakStates(e, original_.initial_calibration)) {
+    for (const int k : weakStates(e, original_.initial_calibration, convergence_.held())) {
       weak += std::string("; still near the prior: ") + calibrationStateName(k) + " (needs " +
               motionThatInforms(k) + ")";
     }
@@ -311,8 +311,16 @@ void Calibrator::finish() {
   }
   if (core_ && (!run_.latest || run_.latest->t < core_->time())) onEstimate(core_->calibration());
   if (run_.latest) {
-    for (const std::string& w : weakDirections(*run_.latest, original_.initial_calibration))
+    for (const std::string& w :
+         weakDirections(*run_.latest, original_.initial_calibration, convergence_.held()))
       run_.warn(w);
+  }
+  if (!dataset_.odom_noise.measures_yaw_rate) {
+    const CalibrationPrior& p = original_.initial_calibration;
+    run_.warn(
+        "s_w is not calibrated: the odometer measures speed only (odometer.measures_yaw_rate: "
+        "false in dataset.yaml); it keeps the initial guess " +
+        fixedText(p.mean.s_w, 4) + " +- " + fixedText(p.sd_s_w, 4));
   }
   run_.odometer_delay = odometer_delay_.estimate();
   const OdometerDelay& d = run_.odometer_delay;

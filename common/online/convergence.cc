@@ -7,12 +7,14 @@
 
 namespace giocal {
 
-ConvergenceMonitor::ConvergenceMonitor(const ConvergenceOptions& options, bool holds_z)
-    : o_(options), holds_z_(holds_z) {
+ConvergenceMonitor::ConvergenceMonitor(const ConvergenceOptions& options, std::vector<int> held)
+    : o_(options), held_(std::move(held)) {
   at_.fill(NAN);
 }
 
-bool ConvergenceMonitor::takesPart(int state) const { return !(holds_z_ && state == 4); }
+bool ConvergenceMonitor::takesPart(int state) const {
+  return std::find(held_.begin(), held_.end(), state) == held_.end();
+}
 
 double ConvergenceMonitor::target(int state) const {
   switch (state) {

@@ -30,7 +30,9 @@ struct ConvergenceEvent {
 class ConvergenceMonitor {
  public:
   /// `holds_z`: p_b_m.z is held (unobservable), so it is left out of "done".
-  ConvergenceMonitor(const ConvergenceOptions& options, bool holds_z);
+  /// `held`: the states (calibration.csv order) the run does not calibrate: p_b_m.z held, s_w
+  /// of a speed-only odometer.
+  ConvergenceMonitor(const ConvergenceOptions& options, std::vector<int> held);
 
   /// The events this estimate causes.
   std::vector<ConvergenceEvent> update(const CalibrationEstimate& e);
@@ -39,11 +41,12 @@ class ConvergenceMonitor {
   /// Every parameter taking part has converged.
   bool done() const;
   bool takesPart(int state) const;
+  const std::vector<int>& held() const { return held_; }
   double target(int state) const;
 
  private:
   ConvergenceOptions o_;
-  bool holds_z_;
+  std::vector<int> held_;
   std::array<std::deque<std::pair<double, double>>, 8> recent_;  // (t, value) over steady_s
   std::array<bool, 8> converged_{};
   std::array<double, 8> at_{};

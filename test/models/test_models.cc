@@ -7,6 +7,7 @@
 #include <random>
 
 #include "common/geodesy/wgs84.h"
+#include "common/math/whitening.h"
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/models/doppler_model.h"
@@ -108,6 +109,7 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
           std::make_shared<NhcModel>(Vec3(0.1, -0.2, 0.5), 0.05),
           std::make_shared<ImuPreintegrationModel>(imu),
           std::make_shared<OdometerPreintegrationModel>(odo),
+          std::make_shared<OdometerPreintegrationModel>(odo, true),  // a speed-only odometer
           std::make_shared<PriorModel>(prior_blocks, mean, Eigen::MatrixXd::Identity(7, 7) * 0.01)};
 }
 
@@ -190,6 +192,30 @@ TEST(StandstillProjection, ResidualUnchangedAndBlindToTheCalibration) {
       }
     }
   }
+}
+
+TEST(OdometerPreintegrationModel, SpeedOnlyIsThePositionRowsAtTheYawScaleOfTheIntervalStart) {
+  auto odo = std::make_shared<OdometerPreintegration>(OdometerPreintegrationNoise{}, 0.02, -0.03);
+  for (int k = 0; k < 25; ++k) odo->integrate(0.04, 2.0, 0.2 + 0.01 * k);
+  const OdometerPreintegrationModel full(odo), speed(odo, true);
+  ASSERT_EQ(speed.residualSize(), 3);
+  std::vector<Eigen::VectorXd> values = randomValues(full);
+  Eigen::VectorXd r_speed, r_other_sw;
+  speed.evaluate(test::pointers(values).data(), r_speed, nullptr);
+  // The position rows of the integral at s_w = -0.03, whitened by their own covariance.
+  OdometerCalibration c;
+  c.s_v = values[4][0];
+  c.s_w = -0.03;
+  c.p_b_m = values[6];
+  c.q_b_m = quatFromWxyz(values[7].data());
+  const OdometerResidual raw = odo->evaluate(values[0], quatFromWxyz(values[1].data()), values[2],
+                                             quatFromWxyz(values[3].data()), c);
+  const Eigen::MatrixXd W = whitener(odo->covarianceAt(c.s_v, c.s_w).topLeftCorner(3, 3), "p");
+  EXPECT_LT((r_speed - W * raw.r.head(3)).norm(), 1e-9 * (1.0 + r_speed.norm()));
+  // Whatever the s_w block holds.
+  values[5][0] = 0.04;
+  speed.evaluate(test::pointers(values).data(), r_other_sw, nullptr);
+  EXPECT_EQ(r_other_sw, r_speed);
 }
 
 TEST(StandstillProjection, IsTheOdometerJacobianAtTheTruthOfAStillVehicle) {

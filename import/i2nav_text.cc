@@ -1,0 +1,237 @@
+#include "import/i2nav_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include "common/geodesy/wgs84.h"
+#include "common/io/data_error.h"
+#include "common/math/rotation.h"
+#include "common/time/gps_time.h"
+
+namespace giocal::import {
+namespace {
+
+// Rows of numbers separated by blanks or commas; '#' and '%' lines and blank lines are skipped.
+class NumberRows {
+ public:
+  explicit NumberRows(std::string path) : path_(std::move(path)), in_(path_) {
+    if (!in_) throw DataError(path_, 0, "cannot open the file");
+  }
+  /// The next row with at least `min_columns` numbers; false at the end. A shorter last line is
+  /// a truncated file: a warning, and the end.
+  bool next(std::vector<double>& row, size_t min_columns, std::vector<std::string>* warnings) {
+    std::string text;
+    while (std::getline(in_, text)) {
+      ++line_;
+      const size_t first = text.find_first_not_of(" \t\r,");
+      if (first == std::string::npos || text[first] == '#' || text[first] == '%') continue;
+      row.clear();
+      const char* p = text.c_str() + first;
+      while (*p) {
+        char* end = nullptr;
+        const double v = std::strtod(p, &end);
+        if (end == p)
+          throw DataError(path_, line_, "not a number: '" + std::string(p).substr(0, 12) + "'");
+        if (!std::isfinite(v)) throw DataError(path_, line_, "a value is not finite");
+        row.push_back(v);
+        p = end;
+        while (*p == ' ' || *p == '\t' || *p == '\r' || *p == ',') ++p;
+      }
+      if (row.size() >= min_columns) return true;
+      if (in_.peek() == std::char_traits<char>::eof()) {
+        if (warnings) {
+          warnings->push_back(path_ + ":" + std::to_string(line_) +
+                              ": truncated last line dropped (" + std::to_string(row.size()) +
+                              " of " + std::to_string(min_columns) + " columns)");
+        }
+        return false;
+      }
+      throw DataError(
+          path_, line_,
+          std::to_string(row.size()) + " columns, expected " + std::to_string(min_columns));
+    }
+    return false;
+  }
+  long line() const { return line_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  long line_ = 0;
+};
+
+double medianOf(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+void noteOutOfOrder(const NumberRows& rows, long& count, std::vector<std::string>& warnings) {
+  if (count++ == 0) {
+    warnings.push_back(rows.path() + ":" + std::to_string(rows.line()) +
+                       ": time not after the previous row's: row dropped (later ones counted)");
+  }
+}
+
+}  // namespace
+
+I2navImu readI2navImu(const std::string& path, int week, double odometer_period) {
+  NumberRows rows(path);
+  I2navImu out;
+  std::vector<std::vector<double>> raw;  // t (GPS seconds), increments, speed, interval
+  std::vector<double> row;
+  long out_of_order = 0;
+  double t_prev = static_cast<double>(week) * kSecondsPerWeek, sow_prev = 0.0;
+  while (rows.next(row, out.columns == 0 ? 7 : static_cast<size_t>(out.columns), &out.warnings)) {
+    if (out.columns == 0) {
+      out.columns = static_cast<int>(row.size());
+      if (out.columns > 9) {
+        throw DataError(path, rows.line(),
+                        std::to_string(out.columns) + " columns: an i2Nav IMU text has 7 to 9");
+      }
+    }
+    if (row[0] < 0.0 || row[0] >= kSecondsPerWeek) {
+      throw DataError(path, rows.line(),
+                      "time " + std::to_string(row[0]) + " is not a second of week");
+    }
+    const double t = gpsSecondsNear(row[0], t_prev);
+    if (!raw.empty() && t <= raw.back()[0]) {
+      noteOutOfOrder(rows, out_of_order, out.warnings);
+      continue;
+    }
+    // The interval from the times of week (GPS seconds near 1.4e9 keep only 0.2 us).
+    double dt = raw.empty() ? 0.0 : row[0] - sow_prev;
+    if (dt < 0.0) dt += kSecondsPerWeek;
+    t_prev = t;
+    sow_prev = row[0];
+    double speed = 0.0;
+    if (out.columns == 8) speed = row[7];
+    if (out.columns == 9) speed = 0.5 * (row[7] + row[8]);
+    raw.push_back({t, row[1], row[2], row[3], row[4], row[5], row[6], speed, dt});
+  }
+  if (out_of_order > 1) {
+    out.warnings.push_back(path + ": " + std::to_string(out_of_order) +
+                           " rows out of time order dropped");
+  }
+  if (raw.size() < 2) throw DataError(path, rows.line(), "fewer than two IMU rows");
+  std::vector<double> dts;
+  for (size_t k = 1; k < raw.size() && k <= 1000; ++k) dts.push_back(raw[k][8]);
+  out.period = medianOf(dts);
+  long gaps = 0;
+  double block_t = 0.0, block_v = 0.0, block_start = NAN;
+  int block_n = 0;
+  for (size_t k = 1; k < raw.size(); ++k) {
+    const std::vector<double>& r = raw[k];
+    double dt = r[8];
+    if (dt > 2.0 * out.period) {
+      if (gaps++ == 0) {
+        out.warnings.push_back(path + ": gap of " + std::to_string(dt) + " s before t=" +
+                               std::to_string(r[0]) + " (its increments taken over one period)");
+      }
+      dt = out.period;
+    }
+    ImuSample s;
+    s.t = r[0] - 0.5 * dt;
+    s.gyro = Eigen::Vector3d(r[1], r[2], r[3]) / dt;
+    s.acc = Eigen::Vector3d(r[4], r[5], r[6]) / dt;
+    out.imu.push_back(s);
+    if (out.columns == 7) continue;
+    if (std::isnan(block_start)) block_start = s.t;
+    block_t += s.t;
+    block_v += r[7];
+    ++block_n;
+    if (s.t - block_start + out.period >= odometer_period - 0.5 * out.period) {
+      out.odom.push_back({block_t / block_n, block_v / block_n, 0.0});
+      block_t = block_v = 0.0;
+      block_n = 0;
+      block_start = NAN;
+    }
+  }
+  return out;
+}
+
+std::vector<RtkSolution> readI2navPos(const std::string& path, int week,
+                                      std::vector<std::string>* warnings) {
+  NumberRows rows(path);
+  std::vector<RtkSolution> out;
+  std::vector<double> r;
+  std::vector<std::string> local;
+  std::vector<std::string>& warn = warnings ? *warnings : local;
+  long out_of_order = 0;
+  double t_prev = static_cast<double>(week) * kSecondsPerWeek;
+  while (rows.next(r, 7, &warn)) {
+    if (r[0] < 0.0 || r[0] >= kSecondsPerWeek || std::abs(r[1]) > 90.0 || std::abs(r[2]) > 360.0 ||
+        std::abs(r[3]) > 1e5 || r[4] < 0.0 || r[5] < 0.0 || r[6] < 0.0) {
+      throw DataError(path, rows.line(),
+                      "time of week, latitude, longitude, height or sigma out of range");
+    }
+    const double t = gpsSecondsNear(r[0], t_prev);
+    if (!out.empty() && t <= out.back().t) {
+      noteOutOfOrder(rows, out_of_order, warn);
+      continue;
+    }
+    t_prev = t;
+    RtkSolution s;
+    s.t = t;
+    const double lat = r[1] * kDegToRad, lon = r[2] * kDegToRad;
+    s.p_e = ecefFromGeodetic({lat, lon, r[3]});
+    const Eigen::Matrix3d R_e_l = rotationEcefFromEnu(lat, lon);
+    const Eigen::Vector3d var_enu(r[5] * r[5], r[4] * r[4], r[6] * r[6]);
+    s.cov_e = R_e_l * var_enu.asDiagonal() * R_e_l.transpose();
+    const double sd_h = std::max(r[4], r[5]);
+    s.quality = sd_h < 0.05 ? 1 : sd_h < 0.5 ? 2 : 5;
+    out.push_back(s);
+  }
+  if (out.empty()) throw DataError(path, rows.line(), "no position rows");
+  return out;
+}
+
+std::vector<TruthSample> readI2navNav(const std::string& path, std::vector<std::string>* warnings) {
+  NumberRows rows(path);
+  std::vector<TruthSample> out;
+  std::vector<double> r;
+  std::vector<std::string> local;
+  std::vector<std::string>& warn = warnings ? *warnings : local;
+  long out_of_order = 0;
+  // NED to ENU: x_enu = (x_ned.y, x_ned.x, -x_ned.z).
+  Eigen::Matrix3d R_enu_ned;
+  R_enu_ned << 0, 1, 0, 1, 0, 0, 0, 0, -1;
+  while (rows.next(r, 11, &warn)) {
+    if (r[0] < 0.0 || r[0] > 9999.0 || r[1] < 0.0 || r[1] >= kSecondsPerWeek ||
+        std::abs(r[2]) > 90.0 || std::abs(r[3]) > 360.0) {
+      throw DataError(path, rows.line(), "week, time of week, latitude or longitude out of range");
+    }
+    TruthSample s;
+    s.t = gpsSecondsFromWeekTime({static_cast<int>(r[0]), r[1]});
+    if (!out.empty() && s.t <= out.back().t) {
+      noteOutOfOrder(rows, out_of_order, warn);
+      continue;
+    }
+    s.lat_deg = r[2];
+    s.lon_deg = r[3];
+    s.h = r[4];
+    s.v_enu = R_enu_ned * Eigen::Vector3d(r[5], r[6], r[7]);
+    const Eigen::Vector3d rpy(r[8] * kDegToRad, r[9] * kDegToRad, r[10] * kDegToRad);
+    const Eigen::Matrix3d R_ned_b = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                                     Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                                     Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                                        .toRotationMatrix();
+    s.q_n_b = Eigen::Quaterniond(R_enu_ned * R_ned_b).normalized();
+    out.push_back(s);
+  }
+  if (out.empty()) throw DataError(path, rows.line(), "no navigation rows");
+  return out;
+}
+
+int firstWeekOfI2navNav(const std::string& path) {
+  NumberRows rows(path);
+  std::vector<double> r;
+  if (!rows.next(r, 11, nullptr)) throw DataError(path, rows.line(), "no navigation rows");
+  if (r[0] < 0.0 || r[0] > 9999.0) throw DataError(path, rows.line(), "week out of range");
+  return static_cast<int>(r[0]);
+}
+
+}  // namespace giocal::import
