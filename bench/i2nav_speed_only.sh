@@ -42,7 +42,7 @@ with open(f"{out}/gnss.txt", "w") as f:
         y, mo, d = map(int, v[0].split("/")); hh, mm = map(int, v[1].split(":")[:2]); ss = float(v[1].split(":")[2])
         import datetime
         t = (datetime.datetime(y, mo, d, hh, mm) - datetime.datetime(1980, 1, 6)).total_seconds() + ss
-        f.write("%.3f %s %s %s %s %s %s\n" % (t % W, v[2], v[3], v[4], v[8], v[7], v[9]))
+        f.write("%.3f %s %s %s %s %s %s\n" % (t % W, v[2], v[3], v[4], v[7], v[8], v[9]))
 tr = np.loadtxt(f"{sim}/truth.csv", delimiter=",", skiprows=1)[::40]
 def quat_to_R(w, x, y, z):
     return np.array([[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)], [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)], [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]])

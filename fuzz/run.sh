@@ -45,6 +45,13 @@ done
   > "$out/fuzz_csv_logs/corpus/pos"
 printf '\x04t_start,t_end,type\n1403252430,1403252750,open_sky\n1403252750,1403253060,few_trees\n' \
   > "$out/fuzz_csv_logs/corpus/scenes"
+# i2Nav text: IMU increments with an odometer speed, GNSS positions, reference navigation.
+printf '\x05456300.000 1e-5 -2e-5 3e-6 0.001 -0.002 -0.049 1.5\n456300.005 1.1e-5 -2e-5 3e-6 0.001 -0.002 -0.049 1.51\n456300.010 1e-5 -2e-5 3e-6 0.001 -0.002 -0.049 1.52\n' \
+  > "$out/fuzz_csv_logs/corpus/i2nav_imu"
+printf '\x06456300.000 30.4447873701 114.4718632047 20.899 0.005 0.004 0.01\n456301.000 30.4447874 114.4718633 20.9 0.005 0.004 0.01\n' \
+  > "$out/fuzz_csv_logs/corpus/i2nav_pos"
+printf '\x072218 456300.000 30.4447873701 114.4718632047 20.899 0.0 0.0 0.0 0.854 -2.034 185.702\n2218 456300.005 30.4447873701 114.4718632047 20.899 0.01 0.0 0.0 0.854 -2.034 185.702\n' \
+  > "$out/fuzz_csv_logs/corpus/i2nav_nav"
 # The real F9P log in pieces of 20 kB (a whole log is slow per execution).
 if [ -d "$out/fuzz_ubx" ]; then
   split -b 20000 -a 3 "$root/data/real/ublox-f9p-walk/gnss_1730.ubx" "$out/fuzz_ubx/corpus/seed"

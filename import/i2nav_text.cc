@@ -13,6 +13,8 @@
 namespace giocal::import {
 namespace {
 
+constexpr double kMinInterval = 1e-4;  // [s]: rows closer than this (10 kHz) are out of order
+
 // Rows of numbers separated by blanks or commas; '#' and '%' lines and blank lines are skipped.
 class NumberRows {
  public:
@@ -81,7 +83,8 @@ void noteOutOfOrder(const NumberRows& rows, long& count, std::vector<std::string
 I2navImu readI2navImu(const std::string& path, int week, double odometer_period) {
   NumberRows rows(path);
   I2navImu out;
-  std::vector<std::vector<double>> raw;  // t (GPS seconds), increments, speed, interval
+  // t (GPS seconds), increments, speed, interval, line
+  std::vector<std::vector<double>> raw;
   std::vector<double> row;
   long out_of_order = 0;
   double t_prev = static_cast<double>(week) * kSecondsPerWeek, sow_prev = 0.0;
@@ -98,19 +101,20 @@ I2navImu readI2navImu(const std::string& path, int week, double odometer_period)
                       "time " + std::to_string(row[0]) + " is not a second of week");
     }
     const double t = gpsSecondsNear(row[0], t_prev);
-    if (!raw.empty() && t <= raw.back()[0]) {
-      noteOutOfOrder(rows, out_of_order, out.warnings);
-      continue;
-    }
     // The interval from the times of week (GPS seconds near 1.4e9 keep only 0.2 us).
     double dt = raw.empty() ? 0.0 : row[0] - sow_prev;
     if (dt < 0.0) dt += kSecondsPerWeek;
+    if (!raw.empty() && (t <= raw.back()[0] || dt < kMinInterval)) {
+      noteOutOfOrder(rows, out_of_order, out.warnings);
+      continue;
+    }
     t_prev = t;
     sow_prev = row[0];
     double speed = 0.0;
     if (out.columns == 8) speed = row[7];
     if (out.columns == 9) speed = 0.5 * (row[7] + row[8]);
-    raw.push_back({t, row[1], row[2], row[3], row[4], row[5], row[6], speed, dt});
+    raw.push_back({t, row[1], row[2], row[3], row[4], row[5], row[6], speed, dt,
+                   static_cast<double>(rows.line())});
   }
   if (out_of_order > 1) {
     out.warnings.push_back(path + ": " + std::to_string(out_of_order) +
@@ -137,6 +141,14 @@ I2navImu readI2navImu(const std::string& path, int week, double odometer_period)
     s.t = r[0] - 0.5 * dt;
     s.gyro = Eigen::Vector3d(r[1], r[2], r[3]) / dt;
     s.acc = Eigen::Vector3d(r[4], r[5], r[6]) / dt;
+    // imu.csv's and odom.csv's physical limits (2000 deg/s, 20 g, 50 m/s).
+    if (!(s.gyro.cwiseAbs().maxCoeff() <= 35.0 && s.acc.cwiseAbs().maxCoeff() <= 200.0 &&
+          std::abs(r[7]) <= 50.0)) {
+      throw DataError(path, static_cast<long>(r[9]),
+                      "increments or speed beyond a vehicle's IMU and odometer (rates over 35 "
+                      "rad/s or 200 m/s^2, or a speed over 50 m/s): not radians and m/s over the "
+                      "interval?");
+    }
     out.imu.push_back(s);
     if (out.columns == 7) continue;
     if (std::isnan(block_start)) block_start = s.t;

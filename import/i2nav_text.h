@@ -26,7 +26,8 @@ struct I2navImu {
 /// (OB_GINS's convention: two are averaged). `week`: the GPS week of the first row (times of
 /// week that wrap count into the next). The first row only opens the first interval; after a
 /// gap (over twice the median period) the increments are taken over one period. A row out of
-/// time order is dropped with a warning; a short or non-numeric row throws DataError naming the
+/// time order (or within 0.1 ms of the previous) is dropped with a warning; increments beyond
+/// imu.csv's physical limits throw DataError naming the line; a short or non-numeric row throws DataError naming the
 /// line, except a truncated last line (dropped with a warning).
 I2navImu readI2navImu(const std::string& path, int week, double odometer_period);
 

@@ -177,6 +177,13 @@ TEST(I2navImport, BadTextAnswersWithTheFileAndLine) {
   r = test::runGiocal("import --i2nav-imu " + bad + " --gps-week 2000 --out " + out);
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.out.find("bad.txt:2: not a number"), std::string::npos) << r.out;
+  // Degrees for radians: rates far beyond a vehicle's.
+  const std::string degrees =
+      dir.write("degrees.txt",
+                "100.0 0 0 0 0 0 0.05 1\n100.005 0 0 2.5 0 0 0.05 1\n100.010 0 0 0 0 0 0.05 1\n");
+  r = test::runGiocal("import --i2nav-imu " + degrees + " --gps-week 2000 --out " + out);
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.out.find("degrees.txt:2: increments or speed beyond"), std::string::npos) << r.out;
   // No week anywhere.
   r = test::runGiocal("import --i2nav-imu " + bad + " --out " + out);
   EXPECT_NE(r.out.find("--gps-week"), std::string::npos) << r.out;
