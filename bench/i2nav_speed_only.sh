@@ -4,7 +4,8 @@
 # giocal rtk's solution as the i2Nav GNSS position file, the truth as a .nav file; then
 # `giocal import --i2nav-imu`, and `calibrate --gnss lc` with both estimators. Prints each
 # estimator's errors against the truth (rotated into the FRD axes) with its sigmas, beside the
-# same drive calibrated from its full odometer (speed and yaw rate) by the same LC scheme.
+# same drive calibrated from its full odometer (speed and yaw rate) by the same LC scheme. The
+# imported dataset.yaml gets the simulated IMU's noise (as a user edits it for theirs).
 # Usage: bench/i2nav_speed_only.sh [seed...]   (default 81; about 2 minutes per seed)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -60,6 +61,13 @@ PY
   "$giocal" import --i2nav-imu "$work/i2nav$seed/imu.txt" --i2nav-pos "$work/i2nav$seed/gnss.txt" \
     --i2nav-nav "$work/i2nav$seed/truth.nav" --lever-arm "$(cat "$work/i2nav$seed/lever")" \
     --out "$work/data$seed" --quiet > /dev/null
+  # As a user would: the IMU's own noise (the import writes i2Nav's ICM20602 figures).
+  /usr/bin/python3 - "$sim/dataset.yaml" "$work/data$seed/dataset.yaml" <<'PY'
+import sys, yaml
+sim, out = yaml.safe_load(open(sys.argv[1])), yaml.safe_load(open(sys.argv[2]))
+out["imu"] = sim["imu"]
+yaml.safe_dump(out, open(sys.argv[2], "w"))
+PY
   for est in ekf fgo; do
     "$giocal" calibrate --data "$work/data$seed" --estimator $est --gnss lc \
       --pos "$work/data$seed/gnss.pos" --out "$work/speed_$est$seed" --quiet > /dev/null

@@ -177,7 +177,8 @@ void Calibrator::release(Datum& d) {
         odometer_delay_.addOdometer(d.odom.t, d.odom.w);
       } else {
         // The IMU up to this time has been released before it (time order).
-        d.odom.w = gyroYawRate(buf_.imu, d.odom.t, dataset_.initial_calibration.mean);
+        d.odom.w = gyroYawRate(buf_.imu, d.odom.t, dataset_.initial_calibration.mean,
+                               core_ ? core_->nav().b_g : Eigen::Vector3d::Zero());
       }
       buf_.odom.push_back(d.odom);
       frontier_ = d.odom.t;

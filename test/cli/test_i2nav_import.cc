@@ -136,6 +136,10 @@ TEST(I2navImport, ASimulatedDriveRoundTripsAndCalibratesWithItsSpeedOnlyOdometer
     EXPECT_LT(logSO3(truth[k].q_n_b.toRotationMatrix().transpose() * R_n_b).norm(), 1e-9);
   }
 
+  // As a user would: the IMU's own noise (the import writes i2Nav's ICM20602 figures).
+  DatasetDescription edited = d;
+  edited.imu_noise = logs.description.imu_noise;
+  writeDatasetDescription(edited);
   // LC calibration with the speed-only odometer: s_v and the extrinsic are calibrated, their
   // sigmas cover their errors; s_w, which nothing measures, keeps its prior.
   OdometerCalibration true_calib = logs.truth_calib.calib;
