@@ -32,6 +32,8 @@ const char* kUsage =
     "usage:\n"
     "  giocal check     --data <dir>\n"
     "  giocal simulate  --config <yaml> --out <dir> [--seed <n>]\n"
+    "  giocal simulate  --config <yaml> --trajectory <file.pos> --rover <obs> --base <obs>\n"
+    "                   --nav <nav>... --out <dir> [--seed <n>]\n"
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
@@ -89,15 +91,40 @@ int runSimulateCommand(int argc, char** argv) {
   po::options_description opts("giocal simulate");
   opts.add_options()("config", po::value<std::string>()->required(), "simulator preset (YAML)")(
       "out", po::value<std::string>()->required(), "output dataset folder")(
-      "seed", po::value<std::uint64_t>()->default_value(1), "random seed");
+      "seed", po::value<std::uint64_t>()->default_value(1), "random seed")(
+      "trajectory", po::value<std::string>()->default_value(""),
+      "RTKLIB-style .pos of the rover antenna: real GNSS, motion sensors synthesized along it")(
+      "rover", po::value<std::string>()->default_value(""), "with --trajectory: rover RINEX")(
+      "base", po::value<std::string>()->default_value(""), "with --trajectory: base RINEX")(
+      "nav", po::value<std::vector<std::string>>()->multitoken(),
+      "with --trajectory: RINEX navigation file(s)")(
+      "knot-spacing", po::value<double>()->default_value(0.0),
+      "with --trajectory: seconds between the fitted path's knots (0: twice the solutions')");
   const po::variables_map vm = giocal::parseCommand(
       argc, argv, opts,
       "giocal simulate: writes a simulated dataset (IMU, odometer, rover and base RINEX, truth) "
       "from a preset",
       "giocal simulate --config config/sim/paper.yaml --out /tmp/paper --seed 7");
   const giocal::InterruptWatch interrupts;
-  giocal::runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
-                      vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
+  giocal::GivenGnss given;
+  given.trajectory = vm["trajectory"].as<std::string>();
+  given.rover = vm["rover"].as<std::string>();
+  given.base = vm["base"].as<std::string>();
+  if (vm.count("nav")) given.nav = vm["nav"].as<std::vector<std::string>>();
+  given.knot_spacing = vm["knot-spacing"].as<double>();
+  if (given.trajectory.empty()) {
+    if (!given.rover.empty() || !given.base.empty() || !given.nav.empty()) {
+      throw std::runtime_error("--rover, --base and --nav go with --trajectory");
+    }
+    giocal::runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
+                        vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
+  } else {
+    if (given.rover.empty() || given.base.empty()) {
+      throw std::runtime_error("--trajectory needs --rover, --base and --nav");
+    }
+    giocal::runSimulateAlong(vm["config"].as<std::string>(), given, vm["out"].as<std::string>(),
+                             vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
+  }
   return 0;
 }
 

@@ -1,24 +1,39 @@
 #include "apps/simulate_command.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <ostream>
 #include <stdexcept>
 
+#include "common/geodesy/wgs84.h"
+#include "common/gnss/pos_reader.h"
+#include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
+#include "sim/fitted_path.h"
 #include "sim/simulator.h"
 
 namespace giocal {
 
-void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
-                 std::ostream& log, const StopRequest* stop) {
-  const sim::SimConfig cfg = sim::readSimConfig(config);
+namespace {
+
+void refuseDatasetFolder(const std::string& out) {
   for (const char* f : {"dataset.yaml", "imu.csv", "odom.csv", "truth.csv", "truth_calib.yaml"}) {
     if (std::filesystem::exists(std::filesystem::path(out) / f)) {
       throw std::runtime_error(out + ": already holds a dataset (" + f +
                                "); choose an empty folder or remove it first");
     }
   }
+}
+
+}  // namespace
+
+void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
+                 std::ostream& log, const StopRequest* stop) {
+  const sim::SimConfig cfg = sim::readSimConfig(config);
+  refuseDatasetFolder(out);
   const auto start = std::chrono::steady_clock::now();
   const sim::SimulatedLogs logs = sim::simulate(cfg, seed);
   checkStop(stop);
@@ -35,6 +50,88 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
       << " IMU and " << logs.odom.size() << " odometer samples, " << logs.gnss.rover.size()
       << " GNSS epochs in " << wall << " s -> " << out << "\n";
   if (logs.gnss.rover.empty()) log << "note: the config has no gnss section; no RINEX written\n";
+}
+
+}  // namespace giocal
+
+namespace giocal {
+
+void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const std::string& out,
+                      std::uint64_t seed, std::ostream& log, const StopRequest* stop) {
+  const sim::SimConfig cfg = sim::readSimConfig(config);
+  refuseDatasetFolder(out);
+  for (const std::string& f : std::vector<std::string>{gnss.rover, gnss.base}) {
+    if (!std::filesystem::exists(f)) throw std::runtime_error(f + ": file missing");
+  }
+  if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
+  // Fixed and float solutions; single points are metres off a vehicle's path.
+  std::vector<PositionFix> fixes;
+  long left_out = 0;
+  for (const PositionFix& f : readPosFile(gnss.trajectory)) {
+    if (f.quality == 1 || f.quality == 2) {
+      fixes.push_back(f);
+    } else {
+      ++left_out;
+    }
+  }
+  if (fixes.size() < 10) {
+    throw std::runtime_error(gnss.trajectory + ": fewer than 10 fixed or float solutions");
+  }
+  const LocalFrame frame(fixes.front().p_e);
+  const double t0 = fixes.front().t;
+  std::vector<sim::AntennaFix> path_fixes;
+  for (const PositionFix& f : fixes) {
+    path_fixes.push_back({f.t - t0, frame.enuFromEcef(f.p_e), std::sqrt(f.cov_enu.trace() / 3.0)});
+  }
+  // The antenna in m: p_m_g = R_m_b (p_b_g - p_b_m).
+  const Eigen::Matrix3d R_m_b = cfg.truth.q_b_m.toRotationMatrix().transpose();
+  const auto start = std::chrono::steady_clock::now();
+  // Knots every two solution intervals by default: closer knots follow the solution's noise
+  // (docs/results.md, "Real GNSS with synthesized motion sensors").
+  sim::FittedPathOptions po;
+  std::vector<double> dts;
+  for (size_t k = 1; k < path_fixes.size(); ++k)
+    dts.push_back(path_fixes[k].t - path_fixes[k - 1].t);
+  std::nth_element(dts.begin(), dts.begin() + static_cast<long>(dts.size() / 2), dts.end());
+  po.knot_spacing =
+      gnss.knot_spacing > 0.0 ? gnss.knot_spacing : std::max(0.5, 2.0 * dts[dts.size() / 2]);
+  const sim::FittedPath path(path_fixes, R_m_b * (cfg.p_b_g - cfg.truth.p_b_m), po);
+  checkStop(stop);
+  sim::SimulatedLogs logs = sim::simulateMotionSensors(cfg, path, frame, t0, seed);
+  checkStop(stop);
+  DatasetDescription& d = logs.description;
+  d.nav.clear();
+  for (size_t k = 0; k < gnss.nav.size(); ++k) {
+    d.nav.push_back(k == 0 ? "nav.rnx" : "nav" + std::to_string(k + 1) + ".rnx");
+  }
+  OutputSet outputs(out);
+  outputs.stagedPath("dataset.yaml", true);
+  sim::writeDataset(logs, outputs.staging());
+  const auto copy = [&](const std::string& from, const std::string& name) {
+    std::filesystem::copy_file(from, outputs.stagedPath(name));
+    std::filesystem::permissions(outputs.stagedPath(name), std::filesystem::perms::owner_write,
+                                 std::filesystem::perm_options::add);
+  };
+  copy(gnss.rover, d.rover_obs);
+  copy(gnss.base, d.base_obs);
+  for (size_t k = 0; k < gnss.nav.size(); ++k) copy(gnss.nav[k], d.nav[k]);
+  checkStop(stop);
+  outputs.commit();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  log << std::fixed << std::setprecision(3) << "simulated '" << cfg.name
+      << "' motion sensors (seed " << seed << ") along " << gnss.trajectory << ": "
+      << path.duration() << " s, " << logs.imu.size() << " IMU and " << logs.odom.size()
+      << " odometer samples, knots every " << po.knot_spacing << " s; the path's "
+      << "antenna against the " << fixes.size() << " solutions: rms " << path.rmsError()
+      << " m, max " << path.maxError() << " m (" << left_out
+      << " single or other solutions left out); " << wall << " s -> " << out << "\n";
+  log.unsetf(std::ios::fixed);
+  if (path.rmsError() > 0.05) {
+    log << "warning: the path misses the solutions by " << path.rmsError()
+        << " m rms: the real carrier phases will not fit the synthesized motion to their "
+           "noise (a solution with jumps, or motion a ground vehicle cannot make)\n";
+  }
 }
 
 }  // namespace giocal

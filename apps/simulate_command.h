@@ -1,9 +1,12 @@
-// `giocal simulate --config <yaml> --out <dir> [--seed <n>]`.
+// `giocal simulate --config <yaml> --out <dir> [--seed <n>]`, and with `--trajectory <file.pos>
+// --rover <obs> --base <obs> --nav <nav>...`: real GNSS files with the motion sensors synthesized
+// along the vehicle path of their position solution.
 #pragma once
 
 #include <cstdint>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "common/io/stop_request.h"
 
@@ -13,5 +16,15 @@ namespace giocal {
 /// overwritten); the dataset's files appear together, or none when `stop` is requested.
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
                  std::ostream& log, const StopRequest* stop = nullptr);
+
+/// The given GNSS files and the preset's IMU, odometer and calibration along the path fitted to
+/// `trajectory` (an RTKLIB-style .pos of the rover antenna; fixed and float solutions used).
+struct GivenGnss {
+  std::string trajectory, rover, base;
+  std::vector<std::string> nav;
+  double knot_spacing = 0.0;  // of the fitted path's splines [s]; 0: twice the solutions' interval
+};
+void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const std::string& out,
+                      std::uint64_t seed, std::ostream& log, const StopRequest* stop = nullptr);
 
 }  // namespace giocal

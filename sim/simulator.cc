@@ -59,14 +59,9 @@ NavState imuState(const VehicleKinematics& m, const Eigen::Matrix3d& R_m_b,
 
 }  // namespace
 
-SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
-  const double t0 = parseGpsTime(config.start_time);
-  const Eigen::Vector3d origin_e = ecefFromGeodetic(
-      {config.origin_lat_deg * kDegToRad, config.origin_lon_deg * kDegToRad, config.origin_h});
-  SimulatedLogs out{LocalFrame(origin_e), {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
-  const LocalFrame& frame = out.frame;
-  const Trajectory traj(MotionProfile(config.segments), config.terrain, Eigen::Vector3d::Zero(),
-                        config.initial_heading_deg * kDegToRad);
+SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& traj,
+                                    const LocalFrame& frame, double t0, std::uint64_t seed) {
+  SimulatedLogs out{frame, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}};
 
   // Independent streams for each sensor keep one sensor's draws from shifting another's.
   std::mt19937_64 rng_imu(seed * 4 + 1), rng_odo(seed * 4 + 2), rng_guess(seed * 4 + 3);
@@ -120,34 +115,6 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
     out.odom.back().t += config.odometer.delay_s;
   }
 
-  if (config.gnss.enabled) {
-    // Antenna at the lever arm p_b_g: p_g = p_b + R_n_b p_b_g, v_g = v_b + R_n_b (w_b x p_b_g).
-    const auto antenna = [&](double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e) {
-      const VehicleKinematics m = traj.at(t - t0);
-      const NavState s = imuState(m, R_m_b, p_m_b, nullptr);
-      const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
-      const Eigen::Vector3d w_b = R_b_m * m.w_m;
-      p_e = frame.ecefFromEnu(s.p_n_b + R_n_b * config.p_b_g);
-      v_e = frame.R_e_n() * (s.v_n_b + R_n_b * w_b.cross(config.p_b_g));
-    };
-    const BroadcastOrbits orbits(readRinexNav(config.gnss.nav_file));
-    const Eigen::Vector3d base_e = frame.ecefFromEnu(config.gnss.base_offset_enu);
-    std::mt19937_64 rng_gnss(seed * 4 + 4);
-    out.gnss =
-        simulateGnss(config.gnss, orbits, antenna, base_e, t0, t0 + traj.duration(), rng_gnss);
-    for (const SceneSpec& sc : config.gnss.scenes) {
-      const double end = std::min(sc.end, traj.duration());
-      if (end > sc.start) out.scenes.push_back({t0 + sc.start, t0 + end, sc.type});
-    }
-    out.nav_file = config.gnss.nav_file;
-    for (const ObsEpoch& e : out.gnss.rover) {
-      Eigen::Vector3d p, v;
-      antenna(e.t, p, v);
-      out.antenna_e.push_back(p);
-    }
-    out.description.base_position_ecef = base_e;
-  }
-
   out.truth_calib.calib = truth_a;
   out.truth_calib.p_b_g = p_a_g;
 
@@ -180,6 +147,49 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   Eigen::Vector3d rot_err;
   for (int i = 0; i < 3; ++i) rot_err[i] = config.guess_sd_rpy_deg * kDegToRad * n01(rng_guess);
   prior.mean.q_b_m = Eigen::Quaterniond(truth_a.q_b_m * expSO3(rot_err)).normalized();
+  return out;
+}
+
+SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
+  const double t0 = parseGpsTime(config.start_time);
+  const Eigen::Vector3d origin_e = ecefFromGeodetic(
+      {config.origin_lat_deg * kDegToRad, config.origin_lon_deg * kDegToRad, config.origin_h});
+  const LocalFrame frame(origin_e);
+  const Trajectory traj(MotionProfile(config.segments), config.terrain, Eigen::Vector3d::Zero(),
+                        config.initial_heading_deg * kDegToRad);
+  SimulatedLogs out = simulateMotionSensors(config, traj, frame, t0, seed);
+  const OdometerCalibration& truth = config.truth;
+  const Eigen::Matrix3d R_b_m = truth.q_b_m.toRotationMatrix();
+  const Eigen::Matrix3d R_m_b = R_b_m.transpose();
+  const Eigen::Vector3d p_m_b = -R_m_b * truth.p_b_m;
+  if (config.gnss.enabled) {
+    // Antenna at the lever arm p_b_g: p_g = p_b + R_n_b p_b_g, v_g = v_b + R_n_b (w_b x p_b_g).
+    const auto antenna = [&](double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e) {
+      const VehicleKinematics m = traj.at(t - t0);
+      const NavState s = imuState(m, R_m_b, p_m_b, nullptr);
+      const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
+      const Eigen::Vector3d w_b = R_b_m * m.w_m;
+      p_e = frame.ecefFromEnu(s.p_n_b + R_n_b * config.p_b_g);
+      v_e = frame.R_e_n() * (s.v_n_b + R_n_b * w_b.cross(config.p_b_g));
+    };
+    const BroadcastOrbits orbits(readRinexNav(config.gnss.nav_file));
+    const Eigen::Vector3d base_e = frame.ecefFromEnu(config.gnss.base_offset_enu);
+    std::mt19937_64 rng_gnss(seed * 4 + 4);
+    out.gnss =
+        simulateGnss(config.gnss, orbits, antenna, base_e, t0, t0 + traj.duration(), rng_gnss);
+    for (const SceneSpec& sc : config.gnss.scenes) {
+      const double end = std::min(sc.end, traj.duration());
+      if (end > sc.start) out.scenes.push_back({t0 + sc.start, t0 + end, sc.type});
+    }
+    out.nav_file = config.gnss.nav_file;
+    for (const ObsEpoch& e : out.gnss.rover) {
+      Eigen::Vector3d p, v;
+      antenna(e.t, p, v);
+      out.antenna_e.push_back(p);
+    }
+    out.description.base_position_ecef = base_e;
+  }
+
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "common/odometer/odom_sample.h"
 #include "sim/gnss_simulator.h"
 #include "sim/sim_config.h"
+#include "sim/trajectory.h"
 
 namespace giocal::sim {
 
@@ -37,6 +38,12 @@ struct SimulatedLogs {
 /// Physically exact truth (normal gravity at each position, Earth rotation, rigid mounting) and
 /// realistic sensor errors. The same config and seed give identical logs.
 SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed);
+
+/// The motion sensors (IMU, odometer), truth, true calibration and dataset description with its
+/// initial guess of a vehicle driving `path` (its time 0 at GPS time t0, positions in frame's
+/// n), with the config's sensor models and calibration; the config's gnss section is not used.
+SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& path,
+                                    const LocalFrame& frame, double t0, std::uint64_t seed);
 
 /// Writes imu.csv, odom.csv, truth.csv, dataset.yaml, truth_calib.yaml and, with scenes,
 /// scenes.csv (t_start,t_end,type) into `folder` (created if missing); each file atomically.

@@ -77,15 +77,27 @@ VehicleKinematics Trajectory::at(double t) const {
   const double th_dot = dth_ds * s_dot;
   const double s_ddot = v_dot * std::cos(th) - v * std::sin(th) * th_dot;
   const double th_ddot = d2th_ds2 * s_dot * s_dot + dth_ds * s_ddot;
-  const double psi = n.psi;
+  PlanarMotion pm;
+  pm.v = v;
+  pm.v_dot = v_dot;
   // The profile's yaw rate W is the heading rate psi_dot (rotation about n's up axis).
-  const double psi_dot = w, psi_ddot = w_dot;
+  pm.psi = n.psi;
+  pm.psi_dot = w;
+  pm.psi_ddot = w_dot;
+  pm.th = th;
+  pm.th_dot = th_dot;
+  pm.th_ddot = th_ddot;
+  return planarKinematics(t, {n.x, n.y, p0_n_.z() + h}, pm);
+}
 
+VehicleKinematics planarKinematics(double t, const Eigen::Vector3d& p_n_m, const PlanarMotion& m) {
+  const double v = m.v, v_dot = m.v_dot, psi = m.psi, psi_dot = m.psi_dot, psi_ddot = m.psi_ddot;
+  const double th = m.th, th_dot = m.th_dot, th_ddot = m.th_ddot;
   VehicleKinematics out;
   out.t = t;
   out.speed = v;
   out.R_n_m = expSO3(Eigen::Vector3d(0, 0, psi)) * expSO3(Eigen::Vector3d(th, 0, 0));
-  out.p_n_m = {n.x, n.y, p0_n_.z() + h};
+  out.p_n_m = p_n_m;
   const double c = std::cos(th), s = std::sin(th), cp = std::cos(psi), sp = std::sin(psi);
   const double H = v * c;  // horizontal speed
   const double H_dot = v_dot * c - v * s * th_dot;

@@ -24,14 +24,33 @@ struct VehicleKinematics {
   double speed = 0.0;                   // forward speed along the path (what the wheels measure)
 };
 
-class Trajectory {
+/// A vehicle path: the kinematics of m at each time since the path's start.
+class VehiclePath {
+ public:
+  virtual ~VehiclePath() = default;
+  virtual double duration() const = 0;
+  virtual VehicleKinematics at(double t) const = 0;
+};
+
+/// Heading psi, pitch theta and forward speed with their derivatives at one instant.
+struct PlanarMotion {
+  double v = 0.0, v_dot = 0.0;
+  double psi = 0.0, psi_dot = 0.0, psi_ddot = 0.0;
+  double th = 0.0, th_dot = 0.0, th_ddot = 0.0;
+};
+
+/// The kinematics of m at position p_n_m moving as `m` says: R_n_m = Rz(psi) Rx(theta), the
+/// velocity along m's forward axis y, no roll.
+VehicleKinematics planarKinematics(double t, const Eigen::Vector3d& p_n_m, const PlanarMotion& m);
+
+class Trajectory : public VehiclePath {
  public:
   /// initial_heading: angle of m's forward axis from north towards west (yaw of R_n_m) [rad].
   Trajectory(MotionProfile profile, Terrain terrain, const Eigen::Vector3d& p0_n,
              double initial_heading);
 
-  double duration() const { return profile_.duration(); }
-  VehicleKinematics at(double t) const;
+  double duration() const override { return profile_.duration(); }
+  VehicleKinematics at(double t) const override;
 
  private:
   struct Node {
