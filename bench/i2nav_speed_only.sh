@@ -15,7 +15,7 @@ seeds=("$@")
 work="$(mktemp -d /tmp/giocal_i2nav.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
 printf "%-5s %-18s %9s %9s %9s %9s %9s %9s\n" seed run "s_v err" "sd" "|p_xy| err" "sd" \
-  "yaw err deg" "sd"
+  "yaw(m) err" "sd deg"
 for seed in "${seeds[@]}"; do
   sim="$work/sim$seed"
   "$giocal" simulate --config "$root/config/sim/field.yaml" --seed "$seed" --out "$sim" > /dev/null
@@ -81,15 +81,15 @@ R = np.array([[0, 1, 0], [1, 0, 0], [0, 0, -1.0]])
 c = yaml.safe_load(open(f"{sim}/truth_calib.yaml"))
 def quat_to_R(w, x, y, z):
     return np.array([[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)], [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)], [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]])
-def rpy(M):
-    return np.degrees([math.atan2(M[2, 1], M[2, 2]), -math.asin(M[2, 0]), math.atan2(M[1, 0], M[0, 0])])
 def row(name, path, rot):
     s = json.load(open(path))
     f, sd = s["final"], s["sd"]
     p_true = rot @ np.array(c["p_b_m"], dtype=float)
     q = c["q_b_m"]
     R_true = rot @ quat_to_R(q["w"], q["x"], q["y"], q["z"]) if isinstance(q, dict) else rot @ quat_to_R(*q)
-    e_yaw = (rpy(quat_to_R(*f["q_b_m"]))[2] - rpy(R_true)[2] + 180.0) % 360.0 - 180.0
+    # About the vehicle's up axis (m's z), whatever the IMU axes: q_b_m = q_true Exp(theta).
+    dR = R_true.T @ quat_to_R(*f["q_b_m"])
+    e_yaw = math.degrees(math.atan2(dR[1, 0] - dR[0, 1], dR[0, 0] + dR[1, 1]))
     e_p = math.hypot(*(np.array(f["p_b_m"][:2]) - p_true[:2]))
     print("%-5s %-18s %9.5f %9.5f %9.4f %9.4f %9.3f %9.3f" % (seed, name, f["s_v"] - c["s_v"], sd["s_v"],
           e_p, math.hypot(*sd["p_b_m"][:2]), e_yaw, sd["rpy_b_m_deg"][2]))
