@@ -123,13 +123,14 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
       << "' motion sensors (seed " << seed << ") along " << gnss.trajectory << ": "
       << path.duration() << " s, " << logs.imu.size() << " IMU and " << logs.odom.size()
       << " odometer samples, knots every " << po.knot_spacing << " s; the path's "
-      << "antenna against the " << fixes.size() << " solutions: rms " << path.rmsError()
-      << " m, max " << path.maxError() << " m (" << left_out
-      << " single or other solutions left out); " << wall << " s -> " << out << "\n";
+      << "antenna against the " << fixes.size() << " solutions: median " << path.medianMiss()
+      << " m, max " << path.maxMiss() << " m, " << path.outliers()
+      << " more than 5 sigma off and left aside (" << left_out
+      << " single or other solutions not used); " << wall << " s -> " << out << "\n";
   log.unsetf(std::ios::fixed);
-  if (path.rmsError() > 0.05) {
-    log << "warning: the path misses the solutions by " << path.rmsError()
-        << " m rms: the real carrier phases will not fit the synthesized motion to their "
+  if (path.medianMiss() > 0.05) {
+    log << "warning: the path misses the solutions by " << path.medianMiss()
+        << " m (median): the real carrier phases will not fit the synthesized motion to their "
            "noise (a solution with jumps, or motion a ground vehicle cannot make)\n";
   }
 }

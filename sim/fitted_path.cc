@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -130,6 +131,22 @@ Eigen::Vector3d positionAt(const std::vector<AntennaFix>& f, double t) {
   return a.p_n + (b.p_n - a.p_n) * ((t - a.t) / (b.t - a.t));
 }
 
+// The fixes with each coordinate replaced by the median of five fixes about it: the start of
+// the fit, where an isolated wrong fix (metres off with a centimetre's sigma) leaves no trace.
+// A median of five points of a monotone coordinate is the point itself.
+std::vector<AntennaFix> medianOfFive(const std::vector<AntennaFix>& f) {
+  std::vector<AntennaFix> out = f;
+  for (size_t k = 2; k + 2 < f.size(); ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      std::array<double, 5> v;
+      for (size_t i = 0; i < 5; ++i) v[i] = f[k + i - 2].p_n[axis];
+      std::nth_element(v.begin(), v.begin() + 2, v.end());
+      out[k].p_n[axis] = v[2];
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector3d& p_m_g,
@@ -145,6 +162,7 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
     }
   }
   duration_ = fixes.back().t;
+  const std::vector<AntennaFix> start = medianOfFive(fixes);
   const int S = std::max(1, static_cast<int>(std::ceil(duration_ / h_ - 1e-9)));
 
   // Start: speed, heading and pitch of the fixes' velocity over 2 s; the heading of the nearest
@@ -154,7 +172,7 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
   for (size_t j = 0; j < control_.size(); ++j) {
     const double t = std::clamp((static_cast<double>(j) - 1.0) * h_, 0.0, duration_);
     const double t0 = std::max(0.0, t - 1.0), t1 = std::min(duration_, t + 1.0);
-    const Eigen::Vector3d v = (positionAt(fixes, t1) - positionAt(fixes, t0)) / (t1 - t0);
+    const Eigen::Vector3d v = (positionAt(start, t1) - positionAt(start, t0)) / (t1 - t0);
     const double speed = v.head<2>().norm();
     moving[j] = speed > 0.3;
     control_[j] = {speed, moving[j] ? std::atan2(-v.x(), v.y()) : 0.0,
@@ -177,7 +195,7 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
     const double* cs[4] = {c.data(), c.data(), c.data(), c.data()};
     Eigen::Vector3d off;
     antennaOffset(cs, 0.0, p_m_g_, off.data());
-    anchor_[static_cast<size_t>(s)] = positionAt(fixes, s * h_) - off;
+    anchor_[static_cast<size_t>(s)] = positionAt(start, s * h_) - off;
   }
 
   ceres::Problem problem;
@@ -188,7 +206,9 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
     const double x = f.t / h_ - s;
     auto* cost = new ceres::AutoDiffCostFunction<FixCost, 3, 3, 3, 3, 3, 3>(
         new FixCost{x, h_, f.p_n, p_m_g_, 1.0 / std::max(f.sigma, o.min_sigma)});
-    problem.AddResidualBlock(cost, nullptr, ap(s), cp(s), cp(s + 1), cp(s + 2), cp(s + 3));
+    // Robust as well: beyond 3 sigma a solution's pull fades (Cauchy).
+    problem.AddResidualBlock(cost, new ceres::CauchyLoss(3.0), ap(s), cp(s), cp(s + 1), cp(s + 2),
+                             cp(s + 3));
   }
   for (int s = 0; s < S; ++s) {
     auto* cost = new ceres::AutoDiffCostFunction<ContinuityCost, 3, 3, 3, 3, 3, 3, 3>(
@@ -222,13 +242,16 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
   for (int s = 0; s < S; ++s) {
     anchor_[static_cast<size_t>(s + 1)] = anchor_[static_cast<size_t>(s)] + displacement(s, 1.0);
   }
-  double sum = 0.0;
+  std::vector<double> misses;
   for (const AntennaFix& f : fixes) {
     const double e = (antennaAt(f.t) - f.p_n).norm();
-    sum += e * e;
+    misses.push_back(e);
     max_ = std::max(max_, e);
+    if (e > 5.0 * std::max(f.sigma, o.min_sigma)) ++outliers_;
   }
-  rms_ = std::sqrt(sum / static_cast<double>(fixes.size()));
+  std::nth_element(misses.begin(), misses.begin() + static_cast<long>(misses.size() / 2),
+                   misses.end());
+  median_ = misses[misses.size() / 2];
 }
 
 Eigen::Vector3d FittedPath::displacement(int s, double x) const {

@@ -1,7 +1,8 @@
 // FittedPath: a differential-drive vehicle path fitted to an antenna position solution. Speed,
 // heading and pitch are cubic B-splines and the position is their integral, so the kinematics
 // are exact for a ground vehicle (no lateral or vertical velocity in m, no roll); the antenna,
-// through its lever arm, follows the solution as closely as that model and the smoothing allow.
+// through its lever arm, follows the solution as closely as that model and the smoothing allow
+// (a robust fit: wrong fixes are left aside).
 #pragma once
 
 #include <Eigen/Core>
@@ -29,8 +30,10 @@ struct FittedPathOptions {
 
 class FittedPath : public VehiclePath {
  public:
-  /// `fixes` in rising time from t = 0; p_m_g: the antenna in m. Throws std::invalid_argument
-  /// with fewer than 10 fixes or a gap over 30 s between two.
+  /// `fixes` in rising time from t = 0; p_m_g: the antenna in m. Robust: the fit starts from the
+  /// fixes' running median of five and weighs them with a Cauchy loss (3 sigma), so a wrong fix
+  /// off its neighbours is left aside.
+  /// Throws std::invalid_argument with fewer than 10 fixes or a gap over 30 s between two.
   FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector3d& p_m_g,
              const FittedPathOptions& options = {});
 
@@ -38,9 +41,11 @@ class FittedPath : public VehiclePath {
   VehicleKinematics at(double t) const override;
   /// The antenna of the path at time t.
   Eigen::Vector3d antennaAt(double t) const;
-  /// Root mean square and largest distance between the path's antenna and the fixes [m].
-  double rmsError() const { return rms_; }
-  double maxError() const { return max_; }
+  /// Median and largest distance between the path's antenna and the fixes [m], and the fixes
+  /// more than 5 sigma from it (wrong fixes the robust fit left aside).
+  double medianMiss() const { return median_; }
+  double maxMiss() const { return max_; }
+  int outliers() const { return outliers_; }
 
  private:
   PlanarMotion motionAt(int segment, double x) const;
@@ -49,7 +54,8 @@ class FittedPath : public VehiclePath {
   std::vector<Eigen::Vector3d> control_;  // (speed, heading, pitch) per control point
   std::vector<Eigen::Vector3d> anchor_;   // position of m at each segment's start
   Eigen::Vector3d p_m_g_;
-  double rms_ = 0.0, max_ = 0.0;
+  double median_ = 0.0, max_ = 0.0;
+  int outliers_ = 0;
 };
 
 }  // namespace giocal::sim

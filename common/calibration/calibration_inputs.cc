@@ -5,8 +5,8 @@
 
 #include "common/gnss/rinex_obs.h"
 #include "common/io/data_error.h"
-#include "common/odometer/gyro_yaw_rate.h"
 #include "common/io/sensor_logs.h"
+#include "common/odometer/gyro_yaw_rate.h"
 
 namespace giocal {
 

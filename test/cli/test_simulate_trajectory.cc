@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -45,6 +46,15 @@ TEST(SimulateTrajectory, TheSimulatorsOwnGnssAndAntennaPathGiveItsDriveAndCalibr
       dir.file("sim/nav.rnx") + " --out " + out);
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("knots every 2.000 s"), std::string::npos) << r.out;
+  // The path's antenna against the solutions: within millimetres but in the turn-ins, which
+  // knots every 2 s round off by centimetres.
+  const size_t at = r.out.find("solutions: median ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  double median = 1.0, max = 1.0;
+  ASSERT_EQ(std::sscanf(r.out.c_str() + at, "solutions: median %lf m, max %lf m", &median, &max),
+            2);
+  EXPECT_LT(median, 0.002);
+  EXPECT_LT(max, 0.05);
 
   // The synthesized IMU runs where the simulator's did (both truth.csv hold the IMU origin and
   // attitude in the local level): the path's smoothing is all that differs.
