@@ -81,7 +81,8 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   const double t0 = fixes.front().t;
   std::vector<sim::AntennaFix> path_fixes;
   for (const PositionFix& f : fixes) {
-    path_fixes.push_back({f.t - t0, frame.enuFromEcef(f.p_e), std::sqrt(f.cov_enu.trace() / 3.0)});
+    path_fixes.push_back(
+        {f.t - t0, frame.enuFromEcef(f.p_e), f.cov_enu.diagonal().cwiseMax(0.0).cwiseSqrt()});
   }
   // The antenna in m: p_m_g = R_m_b (p_b_g - p_b_m).
   const Eigen::Matrix3d R_m_b = cfg.truth.q_b_m.toRotationMatrix().transpose();

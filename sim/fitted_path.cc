@@ -76,15 +76,14 @@ void antennaOffset(const T* const* c, double x, const Eigen::Vector3d& p, T out[
 
 struct FixCost {
   double x, h;
-  Eigen::Vector3d a, p_m_g;
-  double inv_sigma;
+  Eigen::Vector3d a, p_m_g, inv_sigma;
   template <typename T>
   bool operator()(const T* P, const T* c0, const T* c1, const T* c2, const T* c3, T* r) const {
     const T* const c[4] = {c0, c1, c2, c3};
     T d[3], o[3];
     displacementOf(c, x, h, d);
     antennaOffset(c, x, p_m_g, o);
-    for (int k = 0; k < 3; ++k) r[k] = (P[k] + d[k] + o[k] - a[k]) * inv_sigma;
+    for (int k = 0; k < 3; ++k) r[k] = (P[k] + d[k] + o[k] - a[k]) * inv_sigma[k];
     return true;
   }
 };
@@ -205,7 +204,7 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
     const int s = std::min(S - 1, static_cast<int>(f.t / h_));
     const double x = f.t / h_ - s;
     auto* cost = new ceres::AutoDiffCostFunction<FixCost, 3, 3, 3, 3, 3, 3>(
-        new FixCost{x, h_, f.p_n, p_m_g_, 1.0 / std::max(f.sigma, o.min_sigma)});
+        new FixCost{x, h_, f.p_n, p_m_g_, f.sigma.cwiseMax(o.min_sigma).cwiseInverse()});
     // Robust as well: beyond 3 sigma a solution's pull fades (Cauchy).
     problem.AddResidualBlock(cost, new ceres::CauchyLoss(3.0), ap(s), cp(s), cp(s + 1), cp(s + 2),
                              cp(s + 3));
@@ -244,10 +243,10 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
   }
   std::vector<double> misses;
   for (const AntennaFix& f : fixes) {
-    const double e = (antennaAt(f.t) - f.p_n).norm();
-    misses.push_back(e);
-    max_ = std::max(max_, e);
-    if (e > 5.0 * std::max(f.sigma, o.min_sigma)) ++outliers_;
+    const Eigen::Vector3d miss = antennaAt(f.t) - f.p_n;
+    misses.push_back(miss.norm());
+    max_ = std::max(max_, miss.norm());
+    if (miss.cwiseQuotient(f.sigma.cwiseMax(o.min_sigma)).cwiseAbs().maxCoeff() > 5.0) ++outliers_;
   }
   std::nth_element(misses.begin(), misses.begin() + static_cast<long>(misses.size() / 2),
                    misses.end());

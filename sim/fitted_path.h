@@ -12,11 +12,12 @@
 
 namespace giocal::sim {
 
-/// One antenna position: time since the path's start [s], position in n [m], 1-sigma [m].
+/// One antenna position: time since the path's start [s], position in n [m], 1-sigma east,
+/// north, up [m].
 struct AntennaFix {
   double t = 0.0;
   Eigen::Vector3d p_n = Eigen::Vector3d::Zero();
-  double sigma = 0.01;
+  Eigen::Vector3d sigma = Eigen::Vector3d::Constant(0.01);
 };
 
 struct FittedPathOptions {

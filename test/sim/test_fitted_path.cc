@@ -23,8 +23,8 @@ TEST(FittedPath, IsExactKinematicsThroughTheFixesAndLeavesWrongFixesAside) {
     const Eigen::Vector3d p = frame.enuFromEcef(logs.antenna_e[k]);
     truth.push_back(p);
     // Every 37th fix wrong by metres, with a centimetre's sigma (a wrong ambiguity fix).
-    fixes.push_back(
-        {logs.gnss.rover[k].t - t0, k % 37 == 20 ? p + Eigen::Vector3d(3, -2, 1) : p, 0.01});
+    fixes.push_back({logs.gnss.rover[k].t - t0, k % 37 == 20 ? p + Eigen::Vector3d(3, -2, 1) : p,
+                     Eigen::Vector3d::Constant(0.01)});
   }
   const Eigen::Matrix3d R_m_b = cfg.truth.q_b_m.toRotationMatrix().transpose();
   const FittedPath path(fixes, R_m_b * (cfg.p_b_g - cfg.truth.p_b_m), {});
