@@ -16,14 +16,16 @@ namespace {
 constexpr double kMinInterval = 1e-4;  // [s]: rows closer than this (10 kHz) are out of order
 
 // Rows of numbers separated by blanks or commas; '#' and '%' lines and blank lines are skipped.
+// Damage it can step over (a truncated last line, rows out of time order) goes to `warnings`.
 class NumberRows {
  public:
-  explicit NumberRows(std::string path) : path_(std::move(path)), in_(path_) {
+  NumberRows(std::string path, std::vector<std::string>* warnings)
+      : path_(std::move(path)), in_(path_), warnings_(warnings ? *warnings : local_) {
     if (!in_) throw DataError(path_, 0, "cannot open the file");
   }
   /// The next row with at least `min_columns` numbers; false at the end. A shorter last line is
   /// a truncated file: a warning, and the end.
-  bool next(std::vector<double>& row, size_t min_columns, std::vector<std::string>* warnings) {
+  bool next(std::vector<double>& row, size_t min_columns) {
     std::string text;
     while (std::getline(in_, text)) {
       ++line_;
@@ -43,26 +45,40 @@ class NumberRows {
       }
       if (row.size() >= min_columns) return true;
       if (in_.peek() == std::char_traits<char>::eof()) {
-        if (warnings) {
-          warnings->push_back(path_ + ":" + std::to_string(line_) +
-                              ": truncated last line dropped (" + std::to_string(row.size()) +
-                              " of " + std::to_string(min_columns) + " columns)");
-        }
-        return false;
+        warnings_.push_back(path_ + ":" + std::to_string(line_) +
+                            ": truncated last line dropped (" + std::to_string(row.size()) +
+                            " of " + std::to_string(min_columns) + " columns)");
+        return end();
       }
       throw DataError(
           path_, line_,
           std::to_string(row.size()) + " columns, expected " + std::to_string(min_columns));
     }
-    return false;
+    return end();
+  }
+  /// The current row is dropped: its time is not after the previous one's (the first is named).
+  void dropOutOfOrder() {
+    if (out_of_order_++ == 0) {
+      warnings_.push_back(path_ + ":" + std::to_string(line_) +
+                          ": time not after the previous row's: row dropped (later ones counted)");
+    }
   }
   long line() const { return line_; }
-  const std::string& path() const { return path_; }
 
  private:
+  bool end() {
+    if (out_of_order_ > 1) {
+      warnings_.push_back(path_ + ": " + std::to_string(out_of_order_) +
+                          " rows out of time order dropped");
+    }
+    return false;
+  }
   std::string path_;
   std::ifstream in_;
+  std::vector<std::string> local_;
+  std::vector<std::string>& warnings_;
   long line_ = 0;
+  long out_of_order_ = 0;
 };
 
 double medianOf(std::vector<double> v) {
@@ -71,24 +87,16 @@ double medianOf(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-void noteOutOfOrder(const NumberRows& rows, long& count, std::vector<std::string>& warnings) {
-  if (count++ == 0) {
-    warnings.push_back(rows.path() + ":" + std::to_string(rows.line()) +
-                       ": time not after the previous row's: row dropped (later ones counted)");
-  }
-}
-
 }  // namespace
 
 I2navImu readI2navImu(const std::string& path, int week, double odometer_period) {
-  NumberRows rows(path);
   I2navImu out;
+  NumberRows rows(path, &out.warnings);
   // t (GPS seconds), increments, speed, interval, line
   std::vector<std::vector<double>> raw;
   std::vector<double> row;
-  long out_of_order = 0;
   double t_prev = static_cast<double>(week) * kSecondsPerWeek, sow_prev = 0.0;
-  while (rows.next(row, out.columns == 0 ? 7 : static_cast<size_t>(out.columns), &out.warnings)) {
+  while (rows.next(row, out.columns == 0 ? 7 : static_cast<size_t>(out.columns))) {
     if (out.columns == 0) {
       out.columns = static_cast<int>(row.size());
       if (out.columns > 9) {
@@ -105,7 +113,7 @@ I2navImu readI2navImu(const std::string& path, int week, double odometer_period)
     double dt = raw.empty() ? 0.0 : row[0] - sow_prev;
     if (dt < 0.0) dt += kSecondsPerWeek;
     if (!raw.empty() && (t <= raw.back()[0] || dt < kMinInterval)) {
-      noteOutOfOrder(rows, out_of_order, out.warnings);
+      rows.dropOutOfOrder();
       continue;
     }
     t_prev = t;
@@ -115,10 +123,6 @@ I2navImu readI2navImu(const std::string& path, int week, double odometer_period)
     if (out.columns == 9) speed = 0.5 * (row[7] + row[8]);
     raw.push_back({t, row[1], row[2], row[3], row[4], row[5], row[6], speed, dt,
                    static_cast<double>(rows.line())});
-  }
-  if (out_of_order > 1) {
-    out.warnings.push_back(path + ": " + std::to_string(out_of_order) +
-                           " rows out of time order dropped");
   }
   if (raw.size() < 2) throw DataError(path, rows.line(), "fewer than two IMU rows");
   std::vector<double> dts;
@@ -167,14 +171,11 @@ I2navImu readI2navImu(const std::string& path, int week, double odometer_period)
 
 std::vector<RtkSolution> readI2navPos(const std::string& path, int week,
                                       std::vector<std::string>* warnings) {
-  NumberRows rows(path);
+  NumberRows rows(path, warnings);
   std::vector<RtkSolution> out;
   std::vector<double> r;
-  std::vector<std::string> local;
-  std::vector<std::string>& warn = warnings ? *warnings : local;
-  long out_of_order = 0;
   double t_prev = static_cast<double>(week) * kSecondsPerWeek;
-  while (rows.next(r, 7, &warn)) {
+  while (rows.next(r, 7)) {
     if (r[0] < 0.0 || r[0] >= kSecondsPerWeek || std::abs(r[1]) > 90.0 || std::abs(r[2]) > 360.0 ||
         std::abs(r[3]) > 1e5 || r[4] < 0.0 || r[5] < 0.0 || r[6] < 0.0) {
       throw DataError(path, rows.line(),
@@ -182,7 +183,7 @@ std::vector<RtkSolution> readI2navPos(const std::string& path, int week,
     }
     const double t = gpsSecondsNear(r[0], t_prev);
     if (!out.empty() && t <= out.back().t) {
-      noteOutOfOrder(rows, out_of_order, warn);
+      rows.dropOutOfOrder();
       continue;
     }
     t_prev = t;
@@ -202,16 +203,13 @@ std::vector<RtkSolution> readI2navPos(const std::string& path, int week,
 }
 
 std::vector<TruthSample> readI2navNav(const std::string& path, std::vector<std::string>* warnings) {
-  NumberRows rows(path);
+  NumberRows rows(path, warnings);
   std::vector<TruthSample> out;
   std::vector<double> r;
-  std::vector<std::string> local;
-  std::vector<std::string>& warn = warnings ? *warnings : local;
-  long out_of_order = 0;
   // NED to ENU: x_enu = (x_ned.y, x_ned.x, -x_ned.z).
   Eigen::Matrix3d R_enu_ned;
   R_enu_ned << 0, 1, 0, 1, 0, 0, 0, 0, -1;
-  while (rows.next(r, 11, &warn)) {
+  while (rows.next(r, 11)) {
     if (r[0] < 0.0 || r[0] > 9999.0 || r[1] < 0.0 || r[1] >= kSecondsPerWeek ||
         std::abs(r[2]) > 90.0 || std::abs(r[3]) > 360.0) {
       throw DataError(path, rows.line(), "week, time of week, latitude or longitude out of range");
@@ -219,7 +217,7 @@ std::vector<TruthSample> readI2navNav(const std::string& path, std::vector<std::
     TruthSample s;
     s.t = gpsSecondsFromWeekTime({static_cast<int>(r[0]), r[1]});
     if (!out.empty() && s.t <= out.back().t) {
-      noteOutOfOrder(rows, out_of_order, warn);
+      rows.dropOutOfOrder();
       continue;
     }
     s.lat_deg = r[2];
@@ -239,9 +237,9 @@ std::vector<TruthSample> readI2navNav(const std::string& path, std::vector<std::
 }
 
 int firstWeekOfI2navNav(const std::string& path) {
-  NumberRows rows(path);
+  NumberRows rows(path, nullptr);
   std::vector<double> r;
-  if (!rows.next(r, 11, nullptr)) throw DataError(path, rows.line(), "no navigation rows");
+  if (!rows.next(r, 11)) throw DataError(path, rows.line(), "no navigation rows");
   if (r[0] < 0.0 || r[0] > 9999.0) throw DataError(path, rows.line(), "week out of range");
   return static_cast<int>(r[0]);
 }
