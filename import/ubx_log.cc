@@ -22,8 +22,7 @@ constexpr uint8_t kIdRawx = 0x15;
 constexpr uint8_t kIdSfrbx = 0x13;
 constexpr std::size_t kMaxEarlySubframes = 2000;
 
-void readSubframe(const UbxFrame& f, double t_rx, GpsLnavAssembler& lnav,
-                  GalileoInavAssembler& inav, UbxLog& log) {
+void readSubframe(const UbxFrame& f, double t_rx, NavAssemblers& nav, UbxLog& log) {
   ++log.subframes;
   const PayloadReader p(f.payload);
   if (p.size() < 8 || p.size() != 8 + 4 * static_cast<std::size_t>(p.u1(4))) {
@@ -41,11 +40,15 @@ void readSubframe(const UbxFrame& f, double t_rx, GpsLnavAssembler& lnav,
   try {
     std::optional<Ephemeris> eph;
     if ((sat.sys == GnssSystem::kGps || sat.sys == GnssSystem::kQzss) && sig == 0) {
-      eph = lnav.add(sat, words, t_rx);
+      eph = nav.lnav.add(sat, words, t_rx);
     } else if (sat.sys == GnssSystem::kGalileo && (sig == 1 || sig == 5 || sig == 0)) {
       // I/NAV is on E1-B (1) and E5b-I (5); 0 is what drivers that leave this byte reserved
       // report. The pages' CRC tells I/NAV from anything else.
-      eph = inav.add(sat, words, t_rx);
+      eph = nav.inav.add(sat, words, t_rx);
+    } else if (sat.sys == GnssSystem::kBeidou && (sig == 0 || sig == 2 || sig == 4) &&
+               !isBeidouGeo(sat.prn)) {
+      // D1 on B1I (0), B2I (2) and B3I (4) of the MEO and IGSO satellites.
+      eph = nav.d1.add(sat, words, t_rx);
     } else {
       ++log.subframes_not_read;
       return;
@@ -83,9 +86,9 @@ void UbxDecoder::add(const UbxFrame& f, const std::string& where) {
       }
       return;
     }
-    for (const UbxFrame& e : early_) readSubframe(e, log_.obs.epochs.back().t, lnav_, inav_, log_);
+    for (const UbxFrame& e : early_) readSubframe(e, log_.obs.epochs.back().t, nav_, log_);
     early_.clear();
-    readSubframe(f, log_.obs.epochs.back().t, lnav_, inav_, log_);
+    readSubframe(f, log_.obs.epochs.back().t, nav_, log_);
   } else {
     ++log_.other_messages;
   }
@@ -93,7 +96,7 @@ void UbxDecoder::add(const UbxFrame& f, const std::string& where) {
 
 UbxLog UbxDecoder::finish(const UbxStreamCounts& stream) {
   UbxLog log = std::move(log_);
-  if (const auto& iono = lnav_.ionosphere()) {
+  if (const auto& iono = nav_.lnav.ionosphere()) {
     log.nav.gps_iono = *iono;
     log.nav.has_gps_iono = true;
   }

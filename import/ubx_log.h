@@ -8,6 +8,7 @@
 
 #include "common/gnss/observation.h"
 #include "common/gnss/rinex_nav.h"
+#include "import/beidou_d1.h"
 #include "import/galileo_inav.h"
 #include "import/gps_lnav.h"
 #include "import/rawx_decoder.h"
@@ -32,6 +33,13 @@ struct UbxLog {
 
 /// UBX messages (from a log or a bag's ublox_msgs) in arrival order to observations and
 /// ephemerides; warnings name the source and where in it a problem was met.
+/// The subframe assemblers of each navigation message giocal reads.
+struct NavAssemblers {
+  GpsLnavAssembler lnav;
+  GalileoInavAssembler inav;
+  BeidouD1Assembler d1;
+};
+
 class UbxDecoder {
  public:
   explicit UbxDecoder(std::string source);
@@ -45,8 +53,7 @@ class UbxDecoder {
  private:
   std::string source_;
   RawxDecoder rawx_;
-  GpsLnavAssembler lnav_;
-  GalileoInavAssembler inav_;
+  NavAssemblers nav_;
   UbxLog log_;
   std::vector<UbxFrame> early_;
   std::string first_out_of_order_;
