@@ -152,6 +152,10 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
                        const FittedPathOptions& o)
     : h_(o.knot_spacing), p_m_g_(p_m_g) {
   if (fixes.size() < 10) throw std::invalid_argument("fewer than 10 positions to fit a path to");
+  if (!(h_ >= 0.05 && h_ <= 30.0)) {
+    throw std::invalid_argument("knot spacing " + std::to_string(h_) + " s (0.05 to 30 s)");
+  }
+  if (!(fixes.front().t >= 0.0)) throw std::invalid_argument("positions before the path's start");
   for (size_t k = 1; k < fixes.size(); ++k) {
     const double gap = fixes[k].t - fixes[k - 1].t;
     if (!(gap > 0.0)) throw std::invalid_argument("positions not in rising time");
@@ -173,7 +177,7 @@ FittedPath::FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector
     const double t0 = std::max(0.0, t - 1.0), t1 = std::min(duration_, t + 1.0);
     const Eigen::Vector3d v = (positionAt(start, t1) - positionAt(start, t0)) / (t1 - t0);
     const double speed = v.head<2>().norm();
-    moving[j] = speed > 0.3;
+    moving[j] = speed > 0.1;  // RTK noise over 2 s is millimetres per second
     control_[j] = {speed, moving[j] ? std::atan2(-v.x(), v.y()) : 0.0,
                    moving[j] ? std::atan2(v.z(), speed) : 0.0};
   }

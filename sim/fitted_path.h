@@ -34,7 +34,8 @@ class FittedPath : public VehiclePath {
   /// `fixes` in rising time from t = 0; p_m_g: the antenna in m. Robust: the fit starts from the
   /// fixes' running median of five and weighs them with a Cauchy loss (3 sigma), so a wrong fix
   /// off its neighbours is left aside.
-  /// Throws std::invalid_argument with fewer than 10 fixes or a gap over 30 s between two.
+  /// Throws std::invalid_argument with fewer than 10 fixes, a gap over 30 s between two, fixes
+  /// before t = 0 or knots not 0.05 to 30 s apart.
   FittedPath(const std::vector<AntennaFix>& fixes, const Eigen::Vector3d& p_m_g,
              const FittedPathOptions& options = {});
 
