@@ -60,10 +60,12 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
                       std::uint64_t seed, std::ostream& log, const StopRequest* stop) {
   const sim::SimConfig cfg = sim::readSimConfig(config);
   refuseDatasetFolder(out);
-  for (const std::string& f : std::vector<std::string>{gnss.rover, gnss.base}) {
-    if (!std::filesystem::exists(f)) throw std::runtime_error(f + ": file missing");
-  }
   if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
+  std::vector<std::string> given{gnss.rover, gnss.base};
+  given.insert(given.end(), gnss.nav.begin(), gnss.nav.end());
+  for (const std::string& f : given) {
+    if (!std::filesystem::is_regular_file(f)) throw std::runtime_error(f + ": file missing");
+  }
   // Fixed and float solutions; single points are metres off a vehicle's path.
   std::vector<PositionFix> fixes;
   long left_out = 0;
