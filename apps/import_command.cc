@@ -6,6 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "apps/import_i2nav.h"
 #include "common/calibration/coarse_mounting.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/pos_file.h"
@@ -18,10 +19,16 @@
 #include "common/io/sensor_logs.h"
 #include "common/math/rotation.h"
 #include "import/bag_dataset.h"
-#include "apps/import_i2nav.h"
 #include "import/ubx_log.h"
 
 namespace giocal {
+
+std::uintmax_t stageDatasetDescription(OutputSet& outputs, DatasetDescription& d) {
+  d.folder = outputs.staging();
+  outputs.stagedPath("dataset.yaml");  // joins the set; written by the dataset writer
+  writeDatasetDescription(d);
+  return outputs.close("dataset.yaml");
+}
 
 void refuseToOverwrite(const ImportJob& job, const std::vector<std::string>& files) {
   if (job.overwrite) return;
@@ -37,7 +44,6 @@ namespace {
 const std::vector<std::string> kUbxFiles{"rover.obs", "nav.rnx", "import.json"};
 const std::vector<std::string> kBagFiles{"imu.csv", "odom.csv",     "gnss.pos",   "rover.obs",
                                          "nav.rnx", "dataset.yaml", "import.json"};
-
 
 nlohmann::ordered_json countsJson(const import::TopicCounts& c) {
   return {{"topic", c.topic},
@@ -158,7 +164,6 @@ log << "giocal import: " << job.bag << "\n";
 
 OutputSet outputs(job.out);
 DatasetDescription desc;
-desc.folder = outputs.staging();
 desc.rover_obs = desc.base_obs = "";  // no raw GNSS in a bag of fixes
 desc.nav.clear();
 desc.imu_noise = d.imu_noise;
@@ -204,9 +209,7 @@ if (!d.fixes.empty()) {
   writePosFile(outputs.stagedPath("gnss.pos"), h, d.fixes);
   files["gnss.pos"] = outputs.close("gnss.pos");
 }
-outputs.stagedPath("dataset.yaml");  // joins the set; written by the dataset writer
-writeDatasetDescription(desc);
-files["dataset.yaml"] = outputs.close("dataset.yaml");
+files["dataset.yaml"] = stageDatasetDescription(outputs, desc);
 nlohmann::ordered_json j;
 j["files"] = files;
 j["source"] = job.bag;

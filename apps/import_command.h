@@ -5,10 +5,13 @@
 // dataset folder.
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <vector>
 
+#include "common/io/dataset_description.h"
+#include "common/io/output_set.h"
 #include "common/io/stop_request.h"
 
 namespace giocal {
@@ -17,8 +20,8 @@ struct ImportJob {
   std::string ubx, bag, out;
   std::string imu_topic, odom_topic, fix_topic;  // empty: found by message type
   std::string i2nav_imu, i2nav_pos, i2nav_nav;   // i2Nav text logs
-  int gps_week = -1;                              // of the i2Nav IMU's first row; -1: the .nav's
-  std::string lever_arm;                          // "x,y,z" antenna in the IMU frame [m]
+  int gps_week = -1;                             // of the i2Nav IMU's first row; -1: the .nav's
+  std::string lever_arm;                         // "x,y,z" antenna in the IMU frame [m]
   bool overwrite = false;
   bool quiet = false;  // no progress line
   const StopRequest* stop = nullptr;
@@ -29,6 +32,9 @@ struct ImportJob {
 /// dataset.yaml and import.json as one set. i2Nav: imu.csv, odom.csv (speed only), gnss.pos,
 /// truth.csv (from the .nav), dataset.yaml and import.json. Prints the counts and every warning.
 void runImport(const ImportJob& job, std::ostream& log);
+
+/// Writes `d` as dataset.yaml into the set (d.folder becomes its staging folder); its size.
+std::uintmax_t stageDatasetDescription(OutputSet& outputs, DatasetDescription& d);
 
 /// Throws unless job.overwrite when one of `files` exists in job.out.
 void refuseToOverwrite(const ImportJob& job, const std::vector<std::string>& files);

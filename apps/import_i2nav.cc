@@ -76,7 +76,6 @@ void importI2nav(const ImportJob& job, std::ostream& log) {
 
   OutputSet outputs(job.out);
   DatasetDescription desc;
-  desc.folder = outputs.staging();
   desc.rover_obs = desc.base_obs = "";  // positions, not raw GNSS: the LC scheme
   desc.nav.clear();
   desc.imu_noise = defaultImuNoise();
@@ -113,9 +112,7 @@ void importI2nav(const ImportJob& job, std::ostream& log) {
     writeTruthCsv(outputs.stagedPath("truth.csv"), truth);
     files["truth.csv"] = outputs.close("truth.csv");
   }
-  outputs.stagedPath("dataset.yaml");  // joins the set; written by the dataset writer
-  writeDatasetDescription(desc);
-  files["dataset.yaml"] = outputs.close("dataset.yaml");
+  files["dataset.yaml"] = stageDatasetDescription(outputs, desc);
   nlohmann::ordered_json j;
   j["files"] = files;
   j["source"] = {{"imu", job.i2nav_imu}, {"pos", job.i2nav_pos}, {"nav", job.i2nav_nav}};

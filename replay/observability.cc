@@ -234,9 +234,7 @@ ObservabilityReport analyzeObservability(const CalibrationInputs& in, const Obse
   }
   r.total = motionBetween(in.odom, in.odom.front().t, in.odom.back().t);
   // A speed-only odometer says nothing of s_w: not a weakness of the drive.
-  std::vector<int> held;
-  if (!in.description.odom_noise.measures_yaw_rate) held.push_back(calib_index::kSw);
-  r.weak = weakStates(pass.final, prior, held);
+  r.weak = weakStates(pass.final, prior, heldStates(options, in.description));
   r.couplings = couplingsOf(pass, 0.7);
   r.advice = adviceFor(r);
   return r;

@@ -33,6 +33,13 @@ const char* motionThatInforms(int k) {
   return kMotion.at(static_cast<size_t>(k));
 }
 
+std::vector<int> heldStates(const CalibrationOptions& options, const DatasetDescription& d) {
+  std::vector<int> held;
+  if (!d.odom_noise.measures_yaw_rate) held.push_back(calib_index::kSw);
+  if (options.hold_p_b_m_z) held.push_back(calib_index::kP + 2);
+  return held;
+}
+
 std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationPrior& prior,
                             const std::vector<int>& held, double fraction) {
   // calibration.csv's order: s_v, s_w, p_b_m x, y, z [m], roll, pitch, yaw [deg].

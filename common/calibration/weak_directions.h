@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/calibration/calibration_options.h"
 #include "common/calibration/calibration_run.h"
 #include "common/io/dataset_description.h"
 
@@ -20,6 +21,10 @@ namespace giocal {
 std::vector<std::string> weakDirections(const CalibrationEstimate& final,
                                         const CalibrationPrior& prior,
                                         const std::vector<int>& held = {}, double fraction = 0.3);
+
+/// The states (calibration.csv order) a run does not calibrate and so never calls weak: s_w of
+/// a speed-only odometer, p_b_m.z when held.
+std::vector<int> heldStates(const CalibrationOptions& options, const DatasetDescription& d);
 
 /// The indices (calibration.csv order, calibrationStateName()) of the states weakDirections()
 /// names.

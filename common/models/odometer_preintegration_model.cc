@@ -53,8 +53,12 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
     // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
     const double h = 1e-6;
     (*jacobians)[4] += (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * rr / (2 * h);
-    (*jacobians)[5] += (whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h)) * rr / (2 * h);
-    if (n == 3) (*jacobians)[5].setZero();
+    if (n == 6) {
+      (*jacobians)[5] +=
+          (whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h)) * rr / (2 * h);
+    } else {
+      (*jacobians)[5].setZero();  // evaluated at the interval's s_w, whatever the block holds
+    }
   }
 }
 

@@ -27,18 +27,6 @@ const char* stateName(CalibratorState s) {
   return "unknown";
 }
 
-namespace {
-
-// The calibration states (calibration.csv order) a run does not calibrate.
-std::vector<int> heldStates(const CalibrationOptions& options, const DatasetDescription& d) {
-  std::vector<int> held;
-  if (!d.odom_noise.measures_yaw_rate) held.push_back(calib_index::kSw);
-  if (options.hold_p_b_m_z) held.push_back(calib_index::kP + 2);
-  return held;
-}
-
-}  // namespace
-
 Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
                        const Eigen::Vector3d& base_e, const CalibrationOptions& options,
                        CoreFactory factory, RunSink* sink)
