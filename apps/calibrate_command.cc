@@ -40,6 +40,11 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
   for (int k = 0; k < 3; ++k) row(pn[k], e.calib.p_b_m[k], sd[2 + k], err.p_b_m[k], 4);
   const char* rn[3] = {"roll deg", "pitch deg", "yaw deg"};
   for (int k = 0; k < 3; ++k) row(rn[k], rpy[k], sd[5 + k], err.rpy[k] * kRadToDeg, 3);
+  if (std::isfinite(e.odometer_delay_s)) {
+    out << "  " << std::left << std::setw(10) << "t_d_odo s" << std::right << std::setprecision(4)
+        << std::setw(12) << e.odometer_delay_s << " +- " << std::setw(8) << e.odometer_delay_sd_s
+        << "   (the odometer's delay against the IMU)\n";
+  }
   if (truth) out << "  NEES (7 observable states) " << std::setprecision(2) << err.nees7 << "\n";
   out << "  p_b_m.z: " << run.p_b_m_z << "\n";
   out << std::setprecision(1) << "  GNSS epochs " << run.gnss_epochs << ", fix rate "

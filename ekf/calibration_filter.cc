@@ -83,6 +83,10 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
   const double sd_lever = options.estimate_p_b_g ? options.p_b_g_sigma : 0.0;
   s_.add(vectorBlock(ekf_var::kPbg), dataset.p_b_g,
          Eigen::Matrix3d::Identity() * sd_lever * sd_lever);
+  // The odometer's delay, about zero (after time_offsets); a zero variance keeps it there.
+  const double sd_delay = options.estimate_odometer_delay ? options.odometer_delay_sigma : 0.0;
+  s_.add(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1),
+         Eigen::MatrixXd::Constant(1, 1, sd_delay * sd_delay));
 }
 
 std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
@@ -110,7 +114,9 @@ void CalibrationFilter::reopenCalibration() {
 std::vector<int> CalibrationFilter::heldIndices() const {
   if (options_.hold_calibration) {
     const std::array<int, 8> idx = calibrationIndices(s_);
-    return std::vector<int>(idx.begin(), idx.end());
+    std::vector<int> held(idx.begin(), idx.end());
+    held.push_back(s_.offset(block::kTdOdo));
+    return held;
   }
   if (!options_.hold_p_b_m_z) return {};
   return {s_.offset(block::kPbm) + 2};
@@ -257,6 +263,10 @@ void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
       s_.value(block::kSw)[0]);
   last_odo_ = sample;
   interval_moved_ = false;
+  if (options_.estimate_odometer_delay) {
+    odo_rates_.v_n_i = s_.value(nav_var::kV);
+    odo_rates_.w_b_i = gyroMean(sample.t, kPoseRateHalfWindow).rate - s_.value(nav_var::kBg);
+  }
 }
 
 OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
@@ -282,20 +292,25 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     }
     last_odo_ = sample;
     if (interval_done) {
+      if (options_.estimate_odometer_delay) {
+        odo_rates_.v_n_j = s_.value(nav_var::kV);
+        odo_rates_.w_b_j = gyroMean(sample.t, kPoseRateHalfWindow).rate - s_.value(nav_var::kBg);
+      }
       std::shared_ptr<const MeasurementModel> model =
           planar(std::make_shared<OdometerPreintegrationModel>(
               std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_)),
-              !dataset_.odom_noise.measures_yaw_rate));
+              !dataset_.odom_noise.measures_yaw_rate, odo_rates_));
       if (!interval_moved_) model = std::make_shared<StandstillProjection>(model);
       step.interval = true;
       step.reopened = !options_.hold_calibration &&
                       odometer_rejected_in_row_ >= options_.max_odometer_rejections;
       if (step.reopened) reopenCalibration();
-      const UpdateResult r = update(*model,
-                                    {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ,
-                                     block::kSv, block::kSw, block::kPbm, block::kQbm},
-                                    chi2Quantile(options_.chi2_probability, model->residualSize()),
-                                    0.0, options_.odometer_iterations);
+      const UpdateResult r =
+          update(*model,
+                 {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
+                  block::kPbm, block::kQbm, block::kTdOdo},
+                 chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
+                 options_.odometer_iterations);
       step.rejected = !r.accepted;
       odometer_rejected_in_row_ =
           step.rejected && !step.reopened ? odometer_rejected_in_row_ + 1 : 0;
@@ -342,6 +357,11 @@ CalibrationEstimate CalibrationFilter::calibration() const {
   const std::array<int, 8> idx = calibrationIndices(s_);
   for (int a = 0; a < 8; ++a)
     for (int b = 0; b < 8; ++b) e.cov(a, b) = s_.covariance()(idx[a], idx[b]);
+  if (options_.estimate_odometer_delay) {
+    const int d = s_.offset(block::kTdOdo);
+    e.odometer_delay_s = s_.value(block::kTdOdo)[0];
+    e.odometer_delay_sd_s = std::sqrt(s_.covariance()(d, d));
+  }
   return e;
 }
 

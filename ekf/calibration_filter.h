@@ -14,6 +14,7 @@
 #include "common/gnss/pos_reader.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/imu/imu_sample.h"
+#include "common/models/odometer_preintegration_model.h"
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odom_sample.h"
 #include "common/odometer/odometer_preintegration.h"
@@ -123,6 +124,7 @@ class CalibrationFilter {
   double pending_t_ = 0.0;
   std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
   OdomSample last_odo_;
+  PoseRates odo_rates_;  // at the interval's ends, for the odometer's delay (when estimated)
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
   int odometer_rejected_in_row_ = 0;
 };

@@ -150,6 +150,19 @@ void FactorGraphCore::start(const InitialState& init) {
   } else {
     w_.setConstant(kPbg, true);
   }
+  // The odometer's delay, about zero (after time_offsets), held there unless estimated.
+  w_.addVariable(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1));
+  if (o_.estimate_odometer_delay) {
+    w_.addFactor(
+        {std::make_shared<PriorModel>(
+             std::vector<StateBlock>{vectorBlock(block::kTdOdo, 1)}, Eigen::VectorXd::Zero(1),
+             Eigen::MatrixXd::Constant(1, 1, std::pow(o_.odometer_delay_sigma, 2))),
+         {block::kTdOdo},
+         0.0,
+         "odometer_delay_prior"});
+  } else {
+    w_.setConstant(block::kTdOdo, true);
+  }
   feedMotion(e.t, init.x.b_g);
   e.still = motion_.isStatic();
   next_output_ = e.t;
@@ -163,7 +176,14 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
   est.calib.s_w = w_.value(e.sw)[0];
   est.calib.p_b_m = w_.value(kPbm);
   est.calib.q_b_m = quatFromWxyz(w_.value(kQbm).data());
-  est.cov = w_.covariance({e.sv, e.sw, kPbm, kQbm});
+  if (o_.estimate_odometer_delay) {
+    const Eigen::MatrixXd C = w_.covariance({e.sv, e.sw, kPbm, kQbm, block::kTdOdo});
+    est.cov = C.topLeftCorner(8, 8);
+    est.odometer_delay_s = w_.value(block::kTdOdo)[0];
+    est.odometer_delay_sd_s = std::sqrt(C(8, 8));
+  } else {
+    est.cov = w_.covariance({e.sv, e.sw, kPbm, kQbm});
+  }
   if (o_.hold_p_b_m_z) {
     // Held at the prior: its sigma is the prior's, and nothing correlates with it.
     const int z = calib_index::kP + 2;
@@ -247,12 +267,23 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   e.still = motion_.isStatic();
   if (in_.odom.front().t <= prev.t) {
     odo->integrateSamples(in_.odom, prev.t, e.t);
+    PoseRates rates;  // for the odometer's delay: the IMU's velocity and rate at both ends
+    if (o_.estimate_odometer_delay) {
+      const auto rate = [&](double t, const Eigen::Vector3d& b_g) -> Eigen::Vector3d {
+        const double density = in_.description.imu_noise.gyro_noise_density;
+        return meanGyro(in_.imu, t, kPoseRateHalfWindow, density).rate - b_g;
+      };
+      rates.v_n_i = x_prev.v_n_b;
+      rates.w_b_i = rate(prev.t, x_prev.b_g);
+      rates.v_n_j = w_.value(e.v);
+      rates.w_b_j = rate(e.t, x_prev.b_g);
+    }
     std::shared_ptr<const MeasurementModel> model =
         planar(std::make_shared<OdometerPreintegrationModel>(
-            odo, !in_.description.odom_noise.measures_yaw_rate));
+            odo, !in_.description.odom_noise.measures_yaw_rate, rates));
     if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
     w_.addFactor({model,
-                  {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm},
+                  {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm, block::kTdOdo},
                   0.0,
                   tagged("odometer", e.k)});
   }

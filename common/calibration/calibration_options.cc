@@ -38,6 +38,9 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
       y.numberOr(s + "code_outlier_threshold", o.code_outliers.threshold_m, 0.1, 1e4);
   o.estimate_p_b_g = flag("estimate_p_b_g", o.estimate_p_b_g);
   o.p_b_g_sigma = y.numberOr(s + "p_b_g_sigma", o.p_b_g_sigma, 1e-6, 10.0);
+  o.estimate_odometer_delay = flag("estimate_odometer_delay", o.estimate_odometer_delay);
+  o.odometer_delay_sigma =
+      y.numberOr(s + "odometer_delay_sigma", o.odometer_delay_sigma, 1e-4, 1.0);
   o.hold_p_b_m_z = flag("hold_p_b_m_z", o.hold_p_b_m_z);
   o.clock_drift_noise = y.numberOr(s + "clock_drift_noise", o.clock_drift_noise, 0.0, 1e3);
   o.odometer_interval_s = y.numberOr(s + "odometer_interval_s", o.odometer_interval_s, 0.0, 60.0);

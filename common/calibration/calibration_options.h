@@ -60,7 +60,13 @@ struct CalibrationOptions {
   double heading_sigma_deg = 0.05;   // heading constraint while standing still [deg]
   bool estimate_p_b_g = false;       // estimate the GNSS lever arm (else fixed at dataset.yaml)
   double p_b_g_sigma = 0.05;         // its prior 1-sigma when estimated [m]
-  bool hold_p_b_m_z = true;          // keep p_b_m.z at its prior (unobservable in planar motion)
+  // Estimate the odometer's delay against the IMU (t_d_odo, after dataset.yaml's time_offsets) as
+  // a calibration state, to first order: for delays up to about 0.1 s; larger ones belong in
+  // time_offsets.odometer (summary.json's odometer_delay measures them). Not with a speed-only
+  // odometer (its yaw rate is the gyro's).
+  bool estimate_odometer_delay = false;
+  double odometer_delay_sigma = 0.05;  // its prior 1-sigma about zero [s]
+  bool hold_p_b_m_z = true;            // keep p_b_m.z at its prior (unobservable in planar motion)
   // Every calibration state held at its prior as a consider state (its covariance enters the
   // updates, it is never corrected): dead reckoning with a given calibration. Not a YAML key.
   bool hold_calibration = false;

@@ -31,6 +31,8 @@ struct CalibrationEstimate {
   double t = 0.0;
   OdometerCalibration calib;
   Eigen::Matrix<double, 8, 8> cov = Eigen::Matrix<double, 8, 8>::Zero();
+  // The odometer's delay against the IMU and its 1-sigma, when estimated (else NaN) [s].
+  double odometer_delay_s = NAN, odometer_delay_sd_s = NAN;
 
   /// 1-sigma of roll, pitch and yaw of R_b_m [rad], mapped from the tangent covariance.
   Eigen::Vector3d rpySigma() const;

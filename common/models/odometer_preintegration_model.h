@@ -7,6 +7,15 @@
 // sigma^2 / E[(int w dt)^2] (regression dilution, errors in variables); with the weight at the
 // current scales the cost is the profile likelihood over the true readings, which is unbiased
 // (docs/results.md: field preset, W scale).
+//
+// The odometer's delay t_d (a stamp t measures the motion at t - t_d; block t_d_odo): the samples
+// over the stamps [t_i, t_j] measure the motion between the IMU poses at t_i - t_d and t_j - t_d,
+// taken to first order from the poses at t_i, t_j and their rates (PoseRates):
+//   p(t - t_d) = p(t) - t_d v_n_b,  R(t - t_d) = R(t) Exp(-t_d w_b).
+// Why the IMU's rates and not the odometer's readings at the ends: the delay is seen only where
+// the motion changes (a steady arc looks the same at any delay), and a single noisy reading as
+// the regressor shrinks the estimate (errors in variables: 50 ms came out as 20-30 ms on the
+// field preset); the IMU's velocity and mean rate are far less noisy.
 #pragma once
 
 #include <memory>
@@ -18,18 +27,27 @@
 
 namespace giocal {
 
+/// The IMU's velocity (in n) and angular rate (in b, bias removed) at the interval's two ends: the
+/// odometer delay's first-order terms. Zero: the delay block has no effect.
+/// The rate is the gyro's mean over +-kPoseRateHalfWindow [s] (Earth rate, 7e-5 rad/s, left in).
+constexpr double kPoseRateHalfWindow = 0.05;
+struct PoseRates {
+  Eigen::Vector3d v_n_i = Eigen::Vector3d::Zero(), w_b_i = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_n_j = Eigen::Vector3d::Zero(), w_b_j = Eigen::Vector3d::Zero();
+};
+
 class OdometerPreintegrationModel : public MeasurementModel {
  public:
   /// position_only: a speed-only odometer, whose heading change was taken from the gyro: only
   /// the position rows are a measurement, evaluated at the s_w of the interval's start (the
   /// s_w block is not seen; its Jacobian is zero).
   explicit OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration> pre,
-                                       bool position_only = false)
-      : pre_(std::move(pre)), rows_(position_only ? 3 : 6) {}
+                                       bool position_only = false, const PoseRates& rates = {})
+      : pre_(std::move(pre)), rows_(position_only ? 3 : 6), rates_(rates) {}
   std::string name() const override {
     return rows_ == 6 ? "odometer_preintegration" : "odometer_speed_preintegration";
   }
-  /// p@i, q@i, p@j, q@j, s_v@i, s_w@i, p_b_m, q_b_m
+  /// p@i, q@i, p@j, q@j, s_v@i, s_w@i, p_b_m, q_b_m, t_d_odo (the odometer's delay)
   const std::vector<StateBlock>& blocks() const override;
   int residualSize() const override { return rows_; }
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
@@ -41,6 +59,7 @@ class OdometerPreintegrationModel : public MeasurementModel {
   Eigen::MatrixXd whitenerAt(double s_v, double s_w) const;
   std::shared_ptr<const OdometerPreintegration> pre_;
   int rows_;
+  PoseRates rates_;
 };
 
 /// The integral measurement's noise: the odometer's own, and the models' out-of-plane noise.

@@ -29,6 +29,7 @@ inline const std::string kSv = "s_v";
 inline const std::string kSw = "s_w";
 inline const std::string kPbm = "p_b_m";
 inline const std::string kQbm = "q_b_m";
+inline const std::string kTdOdo = "t_d_odo";  // the odometer's delay against the IMU [s]
 inline std::string at(const std::string& name, char epoch) { return name + "@" + epoch; }
 }  // namespace block
 

@@ -38,6 +38,12 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
       reorder_(options.online.reorder_lag_s),
       convergence_(options.online.convergence, heldStates(options, dataset)),
       odometer_delay_(dataset.initial_calibration.mean.q_b_m.toRotationMatrix().col(2)) {
+  if (options.estimate_odometer_delay && !dataset.odom_noise.measures_yaw_rate) {
+    // Its yaw rate is the gyro's, on the IMU's clock: the delay model would shift it too.
+    throw std::invalid_argument(
+        "calibration.estimate_odometer_delay needs an odometer that measures its yaw rate "
+        "(dataset.yaml has odometer.measures_yaw_rate: false)");
+  }
   run_.estimator = std::move(estimator);
   run_.p_b_m_z =
       options.hold_p_b_m_z

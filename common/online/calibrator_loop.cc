@@ -20,6 +20,7 @@ namespace {
 // An odometer delay is worth a word when it is this large and known this well [s].
 constexpr double kDelayToTell = 0.01;
 constexpr double kDelaySigmaToTell = 0.01;
+constexpr double kDelayFirstOrder = 0.1;  // [s] the delay state's first-order model
 
 /// The dataset with its calibration prior replaced by an estimate (for a re-initialization).
 DatasetDescription withPrior(DatasetDescription d, const CalibrationEstimate& e) {
@@ -324,8 +325,15 @@ void Calibrator::finish() {
   }
   run_.odometer_delay = odometer_delay_.estimate();
   const OdometerDelay& d = run_.odometer_delay;
-  if (d.valid && d.sigma_s < kDelaySigmaToTell && std::abs(d.delay_s) > kDelayToTell &&
-      std::abs(d.delay_s) > 3.0 * d.sigma_s) {
+  const bool estimated = run_.latest && std::isfinite(run_.latest->odometer_delay_s);
+  if (estimated && std::abs(run_.latest->odometer_delay_s) > kDelayFirstOrder) {
+    const double t_d = run_.latest->odometer_delay_s;
+    run_.warn("the estimated odometer delay (" + fixedText(1e3 * t_d, 0) + " ms) is beyond the " +
+              fixedText(1e3 * kDelayFirstOrder, 0) +
+              " ms its first-order model holds: set time_offsets: {odometer: " +
+              fixedText(dataset_.time_offsets.odometer - t_d, 3) + "} in dataset.yaml");
+  } else if (!estimated && d.valid && d.sigma_s < kDelaySigmaToTell &&
+             std::abs(d.delay_s) > kDelayToTell && std::abs(d.delay_s) > 3.0 * d.sigma_s) {
     run_.warn("the odometer's stamps are " + fixedText(1e3 * std::abs(d.delay_s), 0) + " +- " +
               fixedText(1e3 * d.sigma_s, 0) + " ms " + (d.delay_s > 0 ? "late" : "early") +
               " against the IMU's (the yaw rate both measure): set time_offsets: {odometer: " +

@@ -38,6 +38,7 @@ std::vector<Eigen::VectorXd> randomValues(const MeasurementModel& m) {
     double scale = 1.0;
     if (b.name.rfind("s_", 0) == 0) scale = 0.05;
     if (b.name.rfind("b_", 0) == 0) scale = 0.02;
+    if (b.name == block::kTdOdo) scale = 0.05;
     values.push_back(test::randomBlockValue(b, scale, rng));
   }
   return values;
@@ -53,6 +54,11 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
   }
   auto odo = std::make_shared<OdometerPreintegration>(OdometerPreintegrationNoise{}, 0.01, -0.01);
   for (int k = 0; k < 30; ++k) odo->integrate(0.02, 1.0 + 0.3 * u(rng), 0.5 * u(rng));
+  PoseRates rates;  // the delay's Jacobian is not zero
+  rates.v_n_i = Vec3(1.0, -0.3, 0.1);
+  rates.w_b_i = Vec3(0.1, 0.2, -0.5);
+  rates.v_n_j = Vec3(-0.7, 1.2, 0.0);
+  rates.w_b_j = Vec3(-0.1, 0.05, 0.4);
   const std::vector<StateBlock> prior_blocks{vectorBlock(block::kSv, 1), vectorBlock(block::kPbm),
                                              rotationBlock(block::kQbm)};
   Eigen::VectorXd mean(8);
@@ -108,8 +114,8 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
                                           Eigen::Vector3d(0.01, 0.02, 0.05).asDiagonal()),
           std::make_shared<NhcModel>(Vec3(0.1, -0.2, 0.5), 0.05),
           std::make_shared<ImuPreintegrationModel>(imu),
-          std::make_shared<OdometerPreintegrationModel>(odo),
-          std::make_shared<OdometerPreintegrationModel>(odo, true),  // a speed-only odometer
+          std::make_shared<OdometerPreintegrationModel>(odo, false, rates),
+          std::make_shared<OdometerPreintegrationModel>(odo, true, rates),  // speed-only
           std::make_shared<PriorModel>(prior_blocks, mean, Eigen::MatrixXd::Identity(7, 7) * 0.01)};
 }
 
@@ -173,7 +179,8 @@ TEST(StandstillProjection, ResidualUnchangedAndBlindToTheCalibration) {
   for (const auto& model : allModels()) {
     const auto& b = model->blocks();
     auto isCalibration = [](const StateBlock& x) {
-      for (const std::string& n : {block::kSv, block::kSw, block::kPbm, block::kQbm}) {
+      for (const std::string& n :
+           {block::kSv, block::kSw, block::kPbm, block::kQbm, block::kTdOdo}) {
         if (x.name == n || x.name.rfind(n + "@", 0) == 0) return true;
       }
       return false;
@@ -231,7 +238,7 @@ TEST(StandstillProjection, IsTheOdometerJacobianAtTheTruthOfAStillVehicle) {
   std::vector<Eigen::MatrixXd> J;
   model.evaluate(test::pointers(values).data(), r, &J);
   EXPECT_LT(r.norm(), 1e-12);
-  for (size_t k = 4; k < 8; ++k) EXPECT_LT(J[k].norm(), 1e-12) << model.blocks()[k].name;
+  for (size_t k = 4; k < 9; ++k) EXPECT_LT(J[k].norm(), 1e-12) << model.blocks()[k].name;
 }
 
 TEST(MeasurementModels, FilterRowsAreTheModelJacobiansAtTheStateOffsets) {

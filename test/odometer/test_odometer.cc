@@ -3,6 +3,7 @@
 #include <random>
 
 #include "common/math/rotation.h"
+#include "common/models/odometer_preintegration_model.h"
 #include "common/odometer/odometer_preintegration.h"
 #include "common/odometer/vehicle_velocity.h"
 #include "numeric_jacobian.h"
@@ -231,6 +232,63 @@ TEST(OdometerPreintegration, KnownVaryingPathAndRelinearizedScales) {
   OdometerCalibration no_scale = pc.truth;
   no_scale.s_v = no_scale.s_w = 0.0;
   EXPECT_GT(lin0.evaluate(p_i, q_i, p_j, q_j, no_scale).r.head<3>().norm(), 3e-2);
+}
+
+// Stamps late by d: the samples over the stamps [0.5, 2.5] s measure the motion over
+// [0.5 - d, 2.5 - d] s. The model with that delay, fed the IMU's velocity and rate at 0.5 and
+// 2.5 s, leaves only its first-order error, of order d^2 (quadrupling when d doubles), where
+// ignoring the delay leaves an error of order d (doubling).
+TEST(OdometerPreintegrationModel, ADelayOfTheStampsIsTakenOutToFirstOrder) {
+  struct Left {
+    double with_delay, ignored;
+  };
+  const auto leftAt = [](double delay) {
+    PathCase pc = makeCase([](double t) { return 0.5 + 0.8 * t - 0.1 * t * t; },
+                           [](double t) { return 0.6 * std::sin(1.3 * t); });
+    for (OdomSample& s : pc.samples) s.t += delay;
+    auto pre = std::make_shared<OdometerPreintegration>(OdometerPreintegrationNoise{}, pc.truth.s_v,
+                                                        pc.truth.s_w);
+    pre->integrateSamples(pc.samples, 0.5, 2.5);
+    std::vector<Eigen::VectorXd> values;
+    PoseRates rates;
+    for (double t : {0.5, 2.5}) {
+      const double h = 1e-3;
+      const auto poses = pc.path.poses({t - h, t, t + h});
+      const auto before = imuPose(pc.path, poses[0].first, poses[0].second, pc.truth);
+      const auto [p, q] = imuPose(pc.path, poses[1].first, poses[1].second, pc.truth);
+      const auto after = imuPose(pc.path, poses[2].first, poses[2].second, pc.truth);
+      const Vec3 v = (after.first - before.first) / (2 * h);
+      const Vec3 w = pc.truth.q_b_m * Vec3(0, 0, pc.path.yaw_rate(t));
+      (t < 1.0 ? rates.v_n_i : rates.v_n_j) = v;
+      (t < 1.0 ? rates.w_b_i : rates.w_b_j) = w;
+      Eigen::VectorXd qv(4);
+      quatToWxyz(q, qv.data());
+      values.push_back(p);
+      values.push_back(qv);
+    }
+    Eigen::VectorXd q_bm(4);
+    quatToWxyz(pc.truth.q_b_m, q_bm.data());
+    values.push_back(Eigen::VectorXd::Constant(1, pc.truth.s_v));
+    values.push_back(Eigen::VectorXd::Constant(1, pc.truth.s_w));
+    values.push_back(pc.truth.p_b_m);
+    values.push_back(q_bm);
+    values.push_back(Eigen::VectorXd::Constant(1, delay));
+    const OdometerPreintegrationModel model(pre, false, rates);
+    std::vector<const double*> params;
+    for (const Eigen::VectorXd& x : values) params.push_back(x.data());
+    Left out{};
+    Eigen::VectorXd r;
+    model.evaluate(params.data(), r, nullptr);
+    out.with_delay = r.norm();
+    values.back()[0] = 0.0;
+    model.evaluate(params.data(), r, nullptr);
+    out.ignored = r.norm();
+    return out;
+  };
+  const Left a = leftAt(0.03), b = leftAt(0.06);
+  EXPECT_GT(a.ignored, 10.0 * a.with_delay);
+  EXPECT_NEAR(b.with_delay / a.with_delay, 4.0, 1.0);  // second order
+  EXPECT_NEAR(b.ignored / a.ignored, 2.0, 0.3);        // first order
 }
 
 TEST(OdometerPreintegration, CovarianceMatchesMonteCarlo) {
