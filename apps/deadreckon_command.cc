@@ -60,10 +60,12 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   dr.start_s = job.start_s;
   dr.duration_s = job.duration_s;
   dr.options.loosely_coupled = !job.positions.empty();
-  const CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
+  CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
   checkStop(job.stop);
   const CalibrationSource source = readCalibrationSource(job.calibration, in);
   dr.calibration = source.calibration;
+  // An estimated odometer delay is part of the calibration: its stamps are put back on time.
+  for (OdomSample& s : in.odom) s.t -= source.odometer_delay_s;
   std::string reference_path = job.reference;
   if (reference_path.empty()) {
     if (in.description.truth.empty()) {
@@ -101,6 +103,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
                 {"error.csv", outputs.close("error.csv")}};
   j["calibration_source"] = source.label;
   j["calibration"] = calibrationJson(source.calibration);
+  if (source.odometer_delay_s != 0.0) j["odometer_delay_applied_s"] = source.odometer_delay_s;
   j["reference"] = reference_path;
   j["gnss_before_start"] = job.positions.empty() ? "tc" : "lc: " + job.positions;
   j["start_s"] = job.start_s;

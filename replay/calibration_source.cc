@@ -1,5 +1,6 @@
 #include "replay/calibration_source.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -41,6 +42,8 @@ CalibrationSource fromSummary(const std::string& path) {
     }
     if (!cov.allFinite()) throw std::runtime_error("not finite");
     s.calibration.covariance = cov;
+    if (f.contains("t_d_odo")) s.odometer_delay_s = f["t_d_odo"].get<double>();
+    if (!std::isfinite(s.odometer_delay_s)) throw std::runtime_error("t_d_odo not finite");
   } catch (const std::exception& e) {
     throw DataError(path, 0, std::string("bad final calibration or covariance: ") + e.what());
   }

@@ -11,6 +11,8 @@ namespace giocal {
 struct CalibrationSource {
   CalibrationPrior calibration;  // mean and covariance
   std::string label;             // what it is, for outputs
+  // The odometer's delay a run estimated (summary.json's final.t_d_odo), else 0 [s].
+  double odometer_delay_s = 0.0;
 };
 
 /// `source`: "<dir>/summary.json" (final values and covariance; the run's output set is checked),

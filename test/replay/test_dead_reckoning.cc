@@ -120,6 +120,7 @@ TEST(CalibrationSource, ReadsRunsRowsTruthAndGuessAndSaysWhatIsWrong) {
   EXPECT_NEAR(s.calibration.mean.s_v, 0.012, 1e-12);
   ASSERT_TRUE(s.calibration.covariance);
   EXPECT_NEAR((*s.calibration.covariance)(3, 3), 4e-6, 1e-15);
+  EXPECT_EQ(s.odometer_delay_s, 0.0);  // not estimated by that run
   const CalibrationSource at60 =
       readCalibrationSource(dir.file("run/calibration.csv@60"), drive.in);
   EXPECT_NEAR(at60.calibration.mean.s_v, 0.012, 1e-12);
@@ -128,6 +129,19 @@ TEST(CalibrationSource, ReadsRunsRowsTruthAndGuessAndSaysWhatIsWrong) {
       readCalibrationSource(dir.file("run/calibration.csv@200"), drive.in);
   EXPECT_NEAR(at200.calibration.mean.s_v, 0.02, 1e-12);
   EXPECT_THROW(readCalibrationSource(dir.file("run/calibration.csv@10"), drive.in), DataError);
+  // A run that estimated the odometer's delay hands it on (deadreckon shifts the stamps by it).
+  {
+    CalibrationRun with_delay = run;
+    with_delay.latest->odometer_delay_s = 0.031;
+    with_delay.latest->odometer_delay_sd_s = 0.002;
+    OutputSet set(dir.file("delay"));
+    RunWriter writer(set);
+    writer.estimate(e);
+    writer.finish(with_delay, nullptr);
+    set.commit();
+  }
+  EXPECT_EQ(readCalibrationSource(dir.file("delay/summary.json"), drive.in).odometer_delay_s,
+            0.031);
   // A run whose data started 100 s earlier than these data (another drive): its own start counts.
   run.t_first_rover_epoch = drive.in.rover.epochs.front().t - 100.0;
   {
