@@ -83,10 +83,11 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
   const double sd_lever = options.estimate_p_b_g ? options.p_b_g_sigma : 0.0;
   s_.add(vectorBlock(ekf_var::kPbg), dataset.p_b_g,
          Eigen::Matrix3d::Identity() * sd_lever * sd_lever);
-  // The odometer's delay, about zero (after time_offsets); a zero variance keeps it there.
-  const double sd_delay = options.estimate_odometer_delay ? options.odometer_delay_sigma : 0.0;
-  s_.add(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1),
-         Eigen::MatrixXd::Constant(1, 1, sd_delay * sd_delay));
+  if (options.estimate_odometer_delay) {  // about zero, after dataset.yaml's time_offsets
+    const double sd = options.odometer_delay_sigma;
+    s_.add(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1),
+           Eigen::MatrixXd::Constant(1, 1, sd * sd));
+  }
 }
 
 std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
@@ -115,7 +116,7 @@ std::vector<int> CalibrationFilter::heldIndices() const {
   if (options_.hold_calibration) {
     const std::array<int, 8> idx = calibrationIndices(s_);
     std::vector<int> held(idx.begin(), idx.end());
-    held.push_back(s_.offset(block::kTdOdo));
+    if (s_.has(block::kTdOdo)) held.push_back(s_.offset(block::kTdOdo));
     return held;
   }
   if (!options_.hold_p_b_m_z) return {};
@@ -292,24 +293,26 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     }
     last_odo_ = sample;
     if (interval_done) {
+      std::vector<std::string> names{ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ,
+                                     block::kSv,     block::kSw,     block::kPbm, block::kQbm};
+      std::optional<PoseRates> rates;  // with the odometer's delay as a state
       if (options_.estimate_odometer_delay) {
         odo_rates_.v_n_j = s_.value(nav_var::kV);
         odo_rates_.w_b_j = gyroMean(sample.t, kPoseRateHalfWindow).rate - s_.value(nav_var::kBg);
+        rates = odo_rates_;
+        names.push_back(block::kTdOdo);
       }
       std::shared_ptr<const MeasurementModel> model =
           planar(std::make_shared<OdometerPreintegrationModel>(
               std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_)),
-              !dataset_.odom_noise.measures_yaw_rate, odo_rates_));
+              !dataset_.odom_noise.measures_yaw_rate, rates));
       if (!interval_moved_) model = std::make_shared<StandstillProjection>(model);
       step.interval = true;
       step.reopened = !options_.hold_calibration &&
                       odometer_rejected_in_row_ >= options_.max_odometer_rejections;
       if (step.reopened) reopenCalibration();
       const UpdateResult r =
-          update(*model,
-                 {ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ, block::kSv, block::kSw,
-                  block::kPbm, block::kQbm, block::kTdOdo},
-                 chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
+          update(*model, names, chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
                  options_.odometer_iterations);
       step.rejected = !r.accepted;
       odometer_rejected_in_row_ =

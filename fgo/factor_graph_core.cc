@@ -150,9 +150,8 @@ void FactorGraphCore::start(const InitialState& init) {
   } else {
     w_.setConstant(kPbg, true);
   }
-  // The odometer's delay, about zero (after time_offsets), held there unless estimated.
-  w_.addVariable(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1));
-  if (o_.estimate_odometer_delay) {
+  if (o_.estimate_odometer_delay) {  // about zero, after dataset.yaml's time_offsets
+    w_.addVariable(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1));
     w_.addFactor(
         {std::make_shared<PriorModel>(
              std::vector<StateBlock>{vectorBlock(block::kTdOdo, 1)}, Eigen::VectorXd::Zero(1),
@@ -160,8 +159,6 @@ void FactorGraphCore::start(const InitialState& init) {
          {block::kTdOdo},
          0.0,
          "odometer_delay_prior"});
-  } else {
-    w_.setConstant(block::kTdOdo, true);
   }
   feedMotion(e.t, init.x.b_g);
   e.still = motion_.isStatic();
@@ -267,25 +264,23 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   e.still = motion_.isStatic();
   if (in_.odom.front().t <= prev.t) {
     odo->integrateSamples(in_.odom, prev.t, e.t);
-    PoseRates rates;  // for the odometer's delay: the IMU's velocity and rate at both ends
+    // With the odometer's delay as a state: the IMU's velocity and rate at both ends.
+    std::optional<PoseRates> rates;
+    std::vector<std::string> vars{prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm};
     if (o_.estimate_odometer_delay) {
       const auto rate = [&](double t, const Eigen::Vector3d& b_g) -> Eigen::Vector3d {
         const double density = in_.description.imu_noise.gyro_noise_density;
         return meanGyro(in_.imu, t, kPoseRateHalfWindow, density).rate - b_g;
       };
-      rates.v_n_i = x_prev.v_n_b;
-      rates.w_b_i = rate(prev.t, x_prev.b_g);
-      rates.v_n_j = w_.value(e.v);
-      rates.w_b_j = rate(e.t, x_prev.b_g);
+      rates =
+          PoseRates{x_prev.v_n_b, rate(prev.t, x_prev.b_g), w_.value(e.v), rate(e.t, x_prev.b_g)};
+      vars.push_back(block::kTdOdo);
     }
     std::shared_ptr<const MeasurementModel> model =
         planar(std::make_shared<OdometerPreintegrationModel>(
             odo, !in_.description.odom_noise.measures_yaw_rate, rates));
     if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
-    w_.addFactor({model,
-                  {prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm, block::kTdOdo},
-                  0.0,
-                  tagged("odometer", e.k)});
+    w_.addFactor({model, vars, 0.0, tagged("odometer", e.k)});
   }
   // Scales and clock drift as random walks (a floor keeps a zero density well posed).
   const double q_s = std::max(in_.description.odom_noise.scale_random_walk, 1e-5) * std::sqrt(dt);

@@ -14,9 +14,13 @@ const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
                                                vectorBlock(block::at(block::kSv, 'i'), 1),
                                                vectorBlock(block::at(block::kSw, 'i'), 1),
                                                vectorBlock(block::kPbm),
-                                               rotationBlock(block::kQbm),
-                                               vectorBlock(block::kTdOdo, 1)};
-  return kBlocks;
+                                               rotationBlock(block::kQbm)};
+  static const std::vector<StateBlock> kWithDelay = [] {
+    std::vector<StateBlock> b = kBlocks;
+    b.push_back(vectorBlock(block::kTdOdo, 1));
+    return b;
+  }();
+  return rates_ ? kWithDelay : kBlocks;
 }
 
 Eigen::MatrixXd OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {
@@ -42,25 +46,33 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
   c.s_w = rows_ == 6 ? params[5][0] : pre_->linSw();
   c.p_b_m = vec3At(params[6]);
   c.q_b_m = quatAt(params[7]);
-  // The IMU poses the delayed stamps stand for.
-  const double t_d = params[8][0];
-  const Eigen::Matrix3d R_i = expSO3(-t_d * rates_.w_b_i), R_j = expSO3(-t_d * rates_.w_b_j);
-  const OdometerResidual r = pre_->evaluate(
-      vec3At(params[0]) - t_d * rates_.v_n_i, Eigen::Quaterniond(quatAt(params[1]) * R_i),
-      vec3At(params[2]) - t_d * rates_.v_n_j, Eigen::Quaterniond(quatAt(params[3]) * R_j), c);
+  // Without the delay block the poses are the states'; with it, the IMU poses the late stamps
+  // stand for.
+  const double t_d = rates_ ? params[8][0] : 0.0;
+  const PoseRates rates = rates_.value_or(PoseRates{});
+  const Eigen::Matrix3d R_i = expSO3(-t_d * rates.w_b_i), R_j = expSO3(-t_d * rates.w_b_j);
+  const OdometerResidual r = rates_ ? pre_->evaluate(vec3At(params[0]) - t_d * rates.v_n_i,
+                                                     Eigen::Quaterniond(quatAt(params[1]) * R_i),
+                                                     vec3At(params[2]) - t_d * rates.v_n_j,
+                                                     Eigen::Quaterniond(quatAt(params[3]) * R_j), c)
+                                    : pre_->evaluate(vec3At(params[0]), quatAt(params[1]),
+                                                     vec3At(params[2]), quatAt(params[3]), c);
   const Eigen::MatrixXd W = whitenerAt(c.s_v, c.s_w);
   const int n = rows_;
   const Eigen::VectorXd rr = r.r.head(n);
   residual = W * rr;
   if (jacobians) {
-    // q Exp(d) Exp(-a) = q Exp(-a) Exp(Exp(a) d): the shifted pose's Jacobian times Exp(a).
-    const Eigen::MatrixXd J_t_d = -(r.J_p_i * rates_.v_n_i + r.J_q_i * rates_.w_b_i +
-                                    r.J_p_j * rates_.v_n_j + r.J_q_j * rates_.w_b_j);
-    *jacobians = {W * r.J_p_i.topRows(n),   W * (r.J_q_i * R_i.transpose()).topRows(n),
-                  W * r.J_p_j.topRows(n),   W * (r.J_q_j * R_j.transpose()).topRows(n),
-                  W * r.J_s_v.topRows(n),   W * r.J_s_w.topRows(n),
-                  W * r.J_p_b_m.topRows(n), W * r.J_q_b_m.topRows(n),
-                  W * J_t_d.topRows(n)};
+    *jacobians = {W * r.J_p_i.topRows(n),   W * r.J_q_i.topRows(n),  W * r.J_p_j.topRows(n),
+                  W * r.J_q_j.topRows(n),   W * r.J_s_v.topRows(n),  W * r.J_s_w.topRows(n),
+                  W * r.J_p_b_m.topRows(n), W * r.J_q_b_m.topRows(n)};
+    if (rates_) {
+      // q Exp(d) Exp(-a) = q Exp(-a) Exp(Exp(a) d): the shifted pose's Jacobian times Exp(a).
+      (*jacobians)[1] = W * (r.J_q_i * R_i.transpose()).topRows(n);
+      (*jacobians)[3] = W * (r.J_q_j * R_j.transpose()).topRows(n);
+      const Eigen::MatrixXd J_t_d = -(r.J_p_i * rates.v_n_i + r.J_q_i * rates.w_b_i +
+                                      r.J_p_j * rates.v_n_j + r.J_q_j * rates.w_b_j);
+      jacobians->push_back(W * J_t_d.topRows(n));
+    }
     // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
     const double h = 1e-6;
     (*jacobians)[4] += (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * rr / (2 * h);

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "common/io/dataset_description.h"
 #include "common/io/model_options.h"
@@ -28,7 +29,7 @@
 namespace giocal {
 
 /// The IMU's velocity (in n) and angular rate (in b, bias removed) at the interval's two ends: the
-/// odometer delay's first-order terms. Zero: the delay block has no effect.
+/// odometer delay's first-order terms.
 /// The rate is the gyro's mean over +-kPoseRateHalfWindow [s] (Earth rate, 7e-5 rad/s, left in).
 constexpr double kPoseRateHalfWindow = 0.05;
 struct PoseRates {
@@ -41,13 +42,15 @@ class OdometerPreintegrationModel : public MeasurementModel {
   /// position_only: a speed-only odometer, whose heading change was taken from the gyro: only
   /// the position rows are a measurement, evaluated at the s_w of the interval's start (the
   /// s_w block is not seen; its Jacobian is zero).
+  /// With `rates`, the model has the odometer's delay as a ninth block.
   explicit OdometerPreintegrationModel(std::shared_ptr<const OdometerPreintegration> pre,
-                                       bool position_only = false, const PoseRates& rates = {})
-      : pre_(std::move(pre)), rows_(position_only ? 3 : 6), rates_(rates) {}
+                                       bool position_only = false,
+                                       std::optional<PoseRates> rates = std::nullopt)
+      : pre_(std::move(pre)), rows_(position_only ? 3 : 6), rates_(std::move(rates)) {}
   std::string name() const override {
     return rows_ == 6 ? "odometer_preintegration" : "odometer_speed_preintegration";
   }
-  /// p@i, q@i, p@j, q@j, s_v@i, s_w@i, p_b_m, q_b_m, t_d_odo (the odometer's delay)
+  /// p@i, q@i, p@j, q@j, s_v@i, s_w@i, p_b_m, q_b_m[, t_d_odo (the odometer's delay)]
   const std::vector<StateBlock>& blocks() const override;
   int residualSize() const override { return rows_; }
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
@@ -59,7 +62,7 @@ class OdometerPreintegrationModel : public MeasurementModel {
   Eigen::MatrixXd whitenerAt(double s_v, double s_w) const;
   std::shared_ptr<const OdometerPreintegration> pre_;
   int rows_;
-  PoseRates rates_;
+  std::optional<PoseRates> rates_;
 };
 
 /// The integral measurement's noise: the odometer's own, and the models' out-of-plane noise.

@@ -195,8 +195,7 @@ struct NoisyYawRateIntervals {
                                                     Eigen::VectorXd::Zero(1),
                                                     Eigen::VectorXd::Constant(1, s),
                                                     Eigen::Vector3d::Zero(),
-                                                    q_bm,
-                                                    Eigen::VectorXd::Zero(1)};
+                                                    q_bm};
           Eigen::VectorXd rv;
           std::vector<Eigen::MatrixXd> Js;
           model.evaluate(test::pointers(values).data(), rv, &Js);
