@@ -21,6 +21,12 @@ int run(const std::string& args, std::string* out) {
   return r.code;
 }
 
+int importHusky(const std::string& out, std::string* log) {
+  return run("import --bag " + std::string(GIOCAL_SOURCE_DIR) +
+                 "/data/real/husky-robot-localization/test1.bag --out " + out,
+             log);
+}
+
 nlohmann::json summary(const std::string& dir) {
   std::ifstream in(dir + "/summary.json");
   return nlohmann::json::parse(in);
@@ -30,11 +36,7 @@ TEST(RealHusky, LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes) {
   test::TempDir dir;
   const std::string data = dir.file("husky"), pos = data + "/gnss.pos";
   std::string log;
-  ASSERT_EQ(run("import --bag " + std::string(GIOCAL_SOURCE_DIR) +
-                    "/data/real/husky-robot-localization/test1.bag --out " + data,
-                &log),
-            0)
-      << log;
+  ASSERT_EQ(importHusky(data, &log), 0) << log;
   // Raw GNSS is what calibrate reads by default; the message says what to do instead.
   log.clear();
   EXPECT_NE(run("calibrate --data " + data + " --out " + dir.file("tc"), &log), 0);
@@ -84,11 +86,7 @@ TEST(RealHusky, AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed) {
   test::TempDir dir;
   const std::string data = dir.file("husky"), pos = data + "/gnss.pos";
   std::string log;
-  ASSERT_EQ(run("import --bag " + std::string(GIOCAL_SOURCE_DIR) +
-                    "/data/real/husky-robot-localization/test1.bag --out " + data,
-                &log),
-            0)
-      << log;
+  ASSERT_EQ(importHusky(data, &log), 0) << log;
   const std::string config = dir.file("lc.yaml");
   std::ofstream(config) << "calibration:\n  estimate_odometer_delay: 1\n  lc:\n    use_height: 0\n";
   for (const std::string est : {"ekf", "fgo"}) {
