@@ -47,7 +47,7 @@ struct CalibrationRun {
   double data_duration_s = 0.0;
   double t_first_rover_epoch =
       NAN;                     // data time the "seconds after the start" of outputs count from
-  double wall_time_s = 0.0;    // estimator time, reading the files excluded
+  double wall_time_s = 0.0;    // calibrator time: reading files and writing outputs excluded
   double load_time_s = 0.0;    // reading and checking the dataset files
   double t_initialized = 0.0;  // time of the first estimated state
   int gnss_epochs = 0;         // rover epochs used with a base epoch

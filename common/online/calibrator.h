@@ -19,6 +19,7 @@
 #include "common/calibration/initial_state.h"
 #include "common/calibration/odometer_delay.h"
 #include "common/gnss/broadcast_orbits.h"
+#include "common/online/busy_timer.h"
 #include "common/online/convergence.h"
 #include "common/online/estimator_core.h"
 #include "common/online/latency_histogram.h"
@@ -95,6 +96,13 @@ class Calibrator {
   void onEstimate(const CalibrationEstimate& e);
   void trim();
   void say(double t, const std::string& text);
+  /// Hands something to the sink (if any), its time counted apart from the calibrator's.
+  template <class F>
+  void toSink(F&& f) {
+    if (!sink_) return;
+    BusyTimer timer(sink_s_);
+    f(*sink_);
+  }
   void dropped(Counter c, double t, const std::string& what);
   /// Counts c and names the first occurrence in a warning (data kept, unlike dropped()).
   void noted(Counter c, const std::string& what);
@@ -133,6 +141,7 @@ class Calibrator {
   double last_rover_t_ = -INFINITY;
   LatencyHistogram latency_;
   double init_time_s_ = 0.0, busy_s_ = 0.0;
+  double sink_s_ = 0.0;       // of busy_s_, spent in the sink
   std::set<Counter> warned_;  // bad-data kinds already named in a warning
   long released_ = 0;
 };
