@@ -64,14 +64,12 @@ void OdometerDelayEstimator::addOdometer(double t, double yaw_rate) {
   block_ = {t, t, 0.0};
 }
 
-double OdometerDelayEstimator::angleAt(double t) const {
-  if (gyro_.empty() || t < gyro_.front().t || t > gyro_.back().t) return NAN;
-  std::size_t lo = 0, hi = gyro_.size() - 1;
-  while (hi - lo > 1) {
-    const std::size_t mid = (lo + hi) / 2;
-    (gyro_[mid].t <= t ? lo : hi) = mid;
-  }
-  const Rate &a = gyro_[lo], &b = gyro_[hi];
+double OdometerDelayEstimator::angleAt(double t, std::size_t& cursor) const {
+  if (gyro_.size() < 2 || t < gyro_.front().t || t > gyro_.back().t) return NAN;
+  // The last sample at or before t (the one before the last at the end), walking forward: the
+  // callers ask for rising times, so a block costs one pass over its samples.
+  while (cursor + 2 < gyro_.size() && gyro_[cursor + 1].t <= t) ++cursor;
+  const Rate &a = gyro_[cursor], &b = gyro_[cursor + 1];
   if (b.t - a.t > 0.1) return NAN;  // an IMU gap
   // The rate is linear between samples: its integral is quadratic.
   const double h = t - a.t, slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
@@ -82,10 +80,11 @@ void OdometerDelayEstimator::compare(const Block& b) {
   const double span = b.t1 - b.t0;
   const double w = b.angle / span;
   std::vector<double> x(sum_x_.size());
-  for (std::size_t j = 0; j < x.size(); ++j) {
-    const double delay = -max_delay_s_ + static_cast<double>(j) * step_s_;
-    x[j] = (angleAt(b.t1 - delay) - angleAt(b.t0 - delay)) / span;
-    if (std::isnan(x[j])) return;  // every candidate sees the same blocks
+  std::size_t at1 = 0, at0 = 0;
+  for (std::size_t k = x.size(); k-- > 0;) {  // the largest delay first: rising times
+    const double delay = -max_delay_s_ + static_cast<double>(k) * step_s_;
+    x[k] = (angleAt(b.t1 - delay, at1) - angleAt(b.t0 - delay, at0)) / span;
+    if (std::isnan(x[k])) return;  // every candidate sees the same blocks
   }
   ++n_;
   sum_w_ += w;

@@ -40,7 +40,8 @@ class OdometerDelayEstimator {
   };
   void compare(const Block& b);
   /// The integral of the rate about up from the first kept sample to t; NaN outside the samples.
-  double angleAt(double t) const;
+  /// `cursor`: where the previous call found its sample (start at 0; times must rise).
+  double angleAt(double t, std::size_t& cursor) const;
 
   Eigen::Vector3d up_b_;
   double max_delay_s_, step_s_;
