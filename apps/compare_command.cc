@@ -85,6 +85,14 @@ void runCompare(const CompareJob& job, std::ostream& log) {
       for (int i = 0; i < 8; ++i) rows[static_cast<size_t>(i)].error[a] = d[i];
     }
   }
+  if (replay.options.estimate_odometer_delay) {  // the odometer's delay as a state
+    Row r{"t_d_odo [s]", {}, {}, {NAN, NAN}};
+    for (int a = 0; a < 2; ++a) {
+      r.value[a] = runs[a].final().odometer_delay_s;
+      r.sd[a] = runs[a].final().odometer_delay_sd_s;
+    }
+    rows.push_back(r);
+  }
   // Table on the terminal.
   log << std::fixed << "giocal compare: " << job.data << "\n"
       << std::left << std::setw(17) << "" << std::right << std::setw(12) << "ekf" << std::setw(10)
