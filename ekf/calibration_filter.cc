@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "common/calibration/weak_directions.h"
 #include "common/gnss/spp.h"
 #include "common/imu/gyro_mean.h"
 #include "common/imu/imu_preintegration.h"
@@ -119,8 +120,11 @@ std::vector<int> CalibrationFilter::heldIndices() const {
     if (s_.has(block::kTdOdo)) held.push_back(s_.offset(block::kTdOdo));
     return held;
   }
-  if (!options_.hold_p_b_m_z) return {};
-  return {s_.offset(block::kPbm) + 2};
+  // States the run keeps at the prior (p_b_m.z in planar motion, a speed-only odometer's s_w).
+  const std::array<int, 8> idx = calibrationIndices(s_);
+  std::vector<int> held;
+  for (int k : heldStates(options_, dataset_)) held.push_back(idx[static_cast<size_t>(k)]);
+  return held;
 }
 
 void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vector3d& v_n_b,
@@ -266,7 +270,8 @@ void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
   interval_moved_ = false;
   if (options_.estimate_odometer_delay) {
     odo_rates_.v_n_i = s_.value(nav_var::kV);
-    odo_rates_.w_b_i = gyroMean(sample.t, kPoseRateHalfWindow).rate - s_.value(nav_var::kBg);
+    odo_rates_.w_b_i =
+        poseRate(imu_, sample.t, s_.value(nav_var::kBg), dataset_.imu_noise.gyro_noise_density);
   }
 }
 
@@ -298,7 +303,8 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
       std::optional<PoseRates> rates;  // with the odometer's delay as a state
       if (options_.estimate_odometer_delay) {
         odo_rates_.v_n_j = s_.value(nav_var::kV);
-        odo_rates_.w_b_j = gyroMean(sample.t, kPoseRateHalfWindow).rate - s_.value(nav_var::kBg);
+        odo_rates_.w_b_j =
+            poseRate(imu_, sample.t, s_.value(nav_var::kBg), dataset_.imu_noise.gyro_noise_density);
         rates = odo_rates_;
         names.push_back(block::kTdOdo);
       }

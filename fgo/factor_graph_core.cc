@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/calibration/weak_directions.h"
 #include "common/gnss/spp.h"
 #include "common/imu/gyro_mean.h"
 #include "common/imu/imu_preintegration.h"
@@ -46,7 +47,8 @@ FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const Broadca
         MotionDetectorOptions m = o.models.motion;
         m.gyro_noise_density = sensors.description.imu_noise.gyro_noise_density;
         return m;
-      }()) {
+      }()),
+      held_(heldStates(o, sensors.description)) {
   start(init);
 }
 
@@ -82,6 +84,7 @@ void FactorGraphCore::addNavVariables(const FgoEpoch& e, const NavState& x, doub
   w_.addVariable(vectorBlock(e.bg), x.b_g);
   w_.addVariable(vectorBlock(e.sv, 1), Eigen::VectorXd::Constant(1, s_v));
   w_.addVariable(vectorBlock(e.sw, 1), Eigen::VectorXd::Constant(1, s_w));
+  if (std::count(held_.begin(), held_.end(), calib_index::kSw)) w_.holdComponents(e.sw, {0});
   w_.addVariable(vectorBlock(e.cd, 1), Eigen::VectorXd::Constant(1, cd));
 }
 
@@ -185,12 +188,13 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
   } else {
     est.cov = w_.covariance({e.sv, e.sw, kPbm, kQbm});
   }
-  if (o_.hold_p_b_m_z) {
-    // Held at the prior: its sigma is the prior's, and nothing correlates with it.
-    const int z = calib_index::kP + 2;
-    est.cov.row(z).setZero();
-    est.cov.col(z).setZero();
-    est.cov(z, z) = std::pow(in_.description.initial_calibration.sd_p_b_m.z(), 2);
+  // A held state stays at the prior: its sigma is the prior's, and nothing correlates with it.
+  const Eigen::Matrix<double, 8, 8> prior =
+      priorCalibrationCovariance(in_.description.initial_calibration);
+  for (int k : held_) {
+    est.cov.row(k).setZero();
+    est.cov.col(k).setZero();
+    est.cov(k, k) = prior(k, k);
   }
   return est;
 }
@@ -272,12 +276,9 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     std::optional<PoseRates> rates;
     std::vector<std::string> vars{prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm};
     if (o_.estimate_odometer_delay) {
-      const auto rate = [&](double t, const Eigen::Vector3d& b_g) -> Eigen::Vector3d {
-        const double density = in_.description.imu_noise.gyro_noise_density;
-        return meanGyro(in_.imu, t, kPoseRateHalfWindow, density).rate - b_g;
-      };
-      rates =
-          PoseRates{x_prev.v_n_b, rate(prev.t, x_prev.b_g), w_.value(e.v), rate(e.t, x_prev.b_g)};
+      const double density = in_.description.imu_noise.gyro_noise_density;
+      rates = PoseRates{x_prev.v_n_b, poseRate(in_.imu, prev.t, x_prev.b_g, density), w_.value(e.v),
+                        poseRate(in_.imu, e.t, x_prev.b_g, density)};
       vars.push_back(block::kTdOdo);
     }
     std::shared_ptr<const MeasurementModel> model =
@@ -286,9 +287,8 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
     w_.addFactor({model, vars, 0.0, tagged("odometer", e.k)});
   }
-  // Scales and clock drift as random walks. A floor keeps a zero density well posed; at
-  // 1e-5/sqrt(s) it set the s_v sigma of a 20-minute drive (2.3x the EKF's, docs/results.md), at
-  // 1e-6 it drifts 3.5e-5 in 20 minutes, under what the field preset's drive measures.
+  // Scales and clock drift as random walks; the floor keeps a zero density well posed (why 1e-6:
+  // docs/design.md).
   const double q_s =
       std::max(in_.description.odom_noise.scale_random_walk, kScaleRandomWalkFloor) * std::sqrt(dt);
   w_.addFactor({std::make_shared<RandomWalkModel>("s_v", 1, q_s), {prev.sv, e.sv}, 0.0, "rw"});

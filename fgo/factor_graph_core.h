@@ -93,6 +93,7 @@ class FactorGraphCore : public EstimatorCore {
   DdEpochBuilder builder_;
   CodeOutlierCheck rover_check_, base_check_;
   MotionDetector motion_;
+  std::vector<int> held_;  // calibration states the run keeps at the prior (heldStates)
   SlidingWindow w_;
   std::deque<FgoEpoch> epochs_;
   int next_k_ = 0;

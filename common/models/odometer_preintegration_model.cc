@@ -1,5 +1,6 @@
 #include "common/models/odometer_preintegration_model.h"
 
+#include "common/imu/gyro_mean.h"
 #include "common/math/so3.h"
 #include "common/math/whitening.h"
 #include "common/models/block_values.h"
@@ -21,6 +22,11 @@ const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
     return b;
   }();
   return rates_ ? kWithDelay : kBlocks;
+}
+
+Eigen::Vector3d poseRate(const std::vector<ImuSample>& imu, double t, const Eigen::Vector3d& b_g,
+                         double gyro_noise_density) {
+  return meanGyro(imu, t, kPoseRateHalfWindow, gyro_noise_density).rate - b_g;
 }
 
 Eigen::MatrixXd OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {

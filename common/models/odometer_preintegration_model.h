@@ -20,7 +20,9 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
+#include "common/imu/imu_sample.h"
 #include "common/io/dataset_description.h"
 #include "common/io/model_options.h"
 #include "common/models/measurement_model.h"
@@ -36,6 +38,9 @@ struct PoseRates {
   Eigen::Vector3d v_n_i = Eigen::Vector3d::Zero(), w_b_i = Eigen::Vector3d::Zero();
   Eigen::Vector3d v_n_j = Eigen::Vector3d::Zero(), w_b_j = Eigen::Vector3d::Zero();
 };
+/// The IMU's rate at t for PoseRates: the gyro's mean over +-kPoseRateHalfWindow less b_g.
+Eigen::Vector3d poseRate(const std::vector<ImuSample>& imu, double t, const Eigen::Vector3d& b_g,
+                         double gyro_noise_density);
 
 class OdometerPreintegrationModel : public MeasurementModel {
  public:

@@ -160,10 +160,8 @@ TEST(I2navImport, ASimulatedDriveRoundTripsAndCalibratesWithItsSpeedOnlyOdometer
     // Yaw (sigma() gives the angles' in degrees).
     EXPECT_LT(sd[7], 0.5 * d.initial_calibration.sd_rpy_b_m.z() * kRadToDeg);
     EXPECT_LT(std::abs(e.rpy.z()) * kRadToDeg, 4.0 * sd[7]) << e.rpy.transpose();
-    // Held at the prior, to the factor graph's numerics (its window Hessian carries the scale
-    // chain's 1e-6/sqrt(s) random walk next to the prior's 0.05).
-    EXPECT_NEAR(run.final().calib.s_w, d.initial_calibration.mean.s_w, 1e-6);
-    EXPECT_NEAR(sd[1], d.initial_calibration.sd_s_w, 1e-4 * d.initial_calibration.sd_s_w);
+    EXPECT_NEAR(run.final().calib.s_w, d.initial_calibration.mean.s_w, 1e-9);
+    EXPECT_NEAR(sd[1], d.initial_calibration.sd_s_w, 1e-6);
     if (std::string(estimator) != "ekf") continue;
     // A robot's driver without a yaw rate sends NaN: taken, turned with the gyro, the same run.
     CalibrationInputs nan_w = in;
