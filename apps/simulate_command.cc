@@ -52,10 +52,6 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
   if (logs.gnss.rover.empty()) log << "note: the config has no gnss section; no RINEX written\n";
 }
 
-}  // namespace giocal
-
-namespace giocal {
-
 void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const std::string& out,
                       std::uint64_t seed, std::ostream& log, const StopRequest* stop) {
   const sim::SimConfig cfg = sim::readSimConfig(config);
