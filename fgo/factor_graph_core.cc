@@ -49,6 +49,7 @@ FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const Broadca
         return m;
       }()),
       held_(heldStates(o, sensors.description)) {
+  w_.setSolver(fo.solver);
   start(init);
 }
 

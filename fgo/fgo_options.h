@@ -4,13 +4,16 @@
 
 #include <string>
 
+#include "fgo/sliding_window.h"
+
 namespace giocal {
 
 class YamlFields;
 
 struct FgoOptions {
   int window = 30;  // GNSS epochs kept in the window (chosen by measurement, docs/results.md)
-  int max_iterations = 10;       // Ceres iterations per solve
+  int max_iterations = 10;                           // solver iterations per solve
+  WindowSolver solver = WindowSolver::kGaussNewton;  // "gauss_newton" or "ceres" (the reference)
   double code_huber = 3.0;       // Huber threshold of DD code and Doppler factors [sigma]
   double rejection_sigma = 5.0;  // rows with post-solve residuals beyond this are removed
   int max_rejections = 5;        // per epoch

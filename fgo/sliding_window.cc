@@ -3,7 +3,6 @@
 #include <ceres/ceres.h>
 
 #include <Eigen/Cholesky>
-#include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <set>
@@ -18,6 +17,7 @@ namespace giocal {
 
 void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& value) {
   ++version_;
+  ++structure_;
   if (has(block.name)) throw std::invalid_argument("window variable '" + block.name + "' exists");
   if (value.size() != block.ambientSize()) {
     throw std::invalid_argument("window variable '" + block.name + "': value size");
@@ -27,6 +27,7 @@ void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& 
 
 void SlidingWindow::removeVariable(const std::string& name) {
   ++version_;
+  ++structure_;
   vars_.erase(name);
   factors_.erase(std::remove_if(factors_.begin(), factors_.end(),
                                 [&](const Factor& f) {
@@ -57,18 +58,21 @@ const StateBlock& SlidingWindow::block(const std::string& name) const {
 
 void SlidingWindow::setConstant(const std::string& name, bool constant) {
   ++version_;
+  ++structure_;
   value(name);
   vars_[name].constant = constant;
 }
 
 void SlidingWindow::holdComponents(const std::string& name, const std::vector<int>& components) {
   ++version_;
+  ++structure_;
   value(name);
   vars_[name].held = components;
 }
 
 void SlidingWindow::addFactor(Factor f) {
   ++version_;
+  ++structure_;
   if (!f.sqrt_info) {
     f.sqrt_info =
         std::make_shared<const Eigen::MatrixXd>(whitener(f.model->covariance(), f.model->name()));
@@ -78,6 +82,7 @@ void SlidingWindow::addFactor(Factor f) {
 
 int SlidingWindow::removeFactors(const std::string& tag) {
   ++version_;
+  ++structure_;
   const auto n = factors_.size();
   factors_.erase(std::remove_if(factors_.begin(), factors_.end(),
                                 [&](const Factor& f) { return f.tag == tag; }),
@@ -95,7 +100,8 @@ std::vector<std::string> SlidingWindow::estimatedVariables() const {
   return out;
 }
 
-SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double function_tolerance) {
+SlidingWindow::SolveReport SlidingWindow::solveWithCeres(int max_iterations,
+                                                         double function_tolerance) {
   ++version_;
   ceres::Problem::Options po;
   po.manifold_ownership = ceres::TAKE_OWNERSHIP;
@@ -162,41 +168,63 @@ std::map<std::string, int> SlidingWindow::tangentOffsets(const std::vector<std::
   return offset;
 }
 
-void SlidingWindow::forEachWhitenedFactor(const std::map<std::string, int>& offset,
-                                          const std::vector<const Factor*>& factors,
-                                          const FactorVisitor& visit, Eigen::VectorXd* b) const {
-  std::vector<Segment> segments;
+std::vector<SlidingWindow::FactorLayout> SlidingWindow::layouts(
+    const std::map<std::string, int>& offset, const std::vector<const Factor*>& factors) const {
+  std::vector<FactorLayout> out;
+  out.reserve(factors.size());
   for (const Factor* f : factors) {
-    std::vector<const double*> params;
-    for (const std::string& v : f->vars) params.push_back(vars_.at(v).value.data());
-    Eigen::VectorXd r;
-    std::vector<Eigen::MatrixXd> J;
-    f->model->evaluate(params.data(), r, &J);
-    segments.clear();
-    std::vector<size_t> blocks;  // the model blocks of `segments`
-    int cols = 0;
+    FactorLayout l;
+    l.factor = f;
     for (size_t k = 0; k < f->vars.size(); ++k) {
+      const Variable& v = vars_.at(f->vars[k]);
+      l.vars.push_back(&v);
       const auto it = offset.find(f->vars[k]);
       if (it == offset.end()) continue;
-      segments.push_back({it->second, cols, static_cast<int>(J[k].cols())});
-      blocks.push_back(k);
-      cols += static_cast<int>(J[k].cols());
+      l.segments.push_back({it->second, l.cols, v.block.tangentSize()});
+      l.blocks.push_back(k);
+      l.cols += v.block.tangentSize();
     }
-    if (segments.empty()) continue;
+    if (!l.segments.empty()) out.push_back(std::move(l));
+  }
+  return out;
+}
+
+void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& factors,
+                                          const FactorVisitor& visit, Eigen::VectorXd* b,
+                                          bool robust, double* cost) const {
+  std::vector<const double*> params;
+  Eigen::VectorXd r;
+  std::vector<Eigen::MatrixXd> J;
+  for (size_t n = 0; n < factors.size(); ++n) {
+    const FactorLayout& l = factors[n];
+    const Factor* f = l.factor;
+    params.clear();
+    for (const Variable* v : l.vars) params.push_back(v->value.data());
+    f->model->evaluate(params.data(), r, &J);
     // One whitened Jacobian and one product per factor: per-block products cost more in
     // allocations than in arithmetic (window 30: 37.6 -> 29.4 ms per epoch).
-    Eigen::MatrixXd Jf(r.size(), cols);
-    for (size_t i = 0; i < segments.size(); ++i) {
-      Jf.middleCols(segments[i].local, segments[i].size) = J[blocks[i]];
+    Eigen::MatrixXd Jf(r.size(), l.cols);
+    for (size_t i = 0; i < l.segments.size(); ++i) {
+      Jf.middleCols(l.segments[i].local, l.segments[i].size) = J[l.blocks[i]];
     }
     const Eigen::MatrixXd& S = *f->sqrt_info;
-    const Eigen::MatrixXd Jw = S * Jf;
+    Eigen::MatrixXd Jw = S * Jf;
+    Eigen::VectorXd rw = S * r;
+    const double s2 = rw.squaredNorm();
+    if (robust && f->huber > 0.0 && s2 > f->huber * f->huber) {
+      const double weight = std::sqrt(f->huber / std::sqrt(s2));
+      Jw *= weight;
+      rw *= weight;
+      if (cost) *cost += 0.5 * (2.0 * f->huber * std::sqrt(s2) - f->huber * f->huber);
+    } else if (cost) {
+      *cost += 0.5 * s2;
+    }
     if (b) {
-      const Eigen::VectorXd g = Jw.transpose() * (S * r);
-      for (const Segment& seg : segments)
+      const Eigen::VectorXd g = Jw.transpose() * rw;
+      for (const Segment& seg : l.segments)
         b->segment(seg.global, seg.size) += g.segment(seg.local, seg.size);
     }
-    visit(segments, Jw.transpose() * Jw);
+    visit(n, l, Jw.transpose() * Jw);
   }
 }
 
@@ -208,10 +236,10 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
   H = Eigen::MatrixXd::Zero(n, n);
   b = Eigen::VectorXd::Zero(n);
   forEachWhitenedFactor(
-      offset, factors,
-      [&](const std::vector<Segment>& segments, const Eigen::MatrixXd& Hf) {
-        for (const Segment& u : segments) {
-          for (const Segment& v : segments) {
+      layouts(offset, factors),
+      [&](size_t, const FactorLayout& l, const Eigen::MatrixXd& Hf) {
+        for (const Segment& u : l.segments) {
+          for (const Segment& v : l.segments) {
             H.block(u.global, v.global, u.size, v.size) +=
                 Hf.block(u.local, v.local, u.size, v.size);
           }
@@ -220,75 +248,9 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
       &b);
 }
 
-struct SlidingWindow::HessianFactorization {
-  long version = -1;
-  int n = 0;
-  std::map<std::string, int> offset;
-  Eigen::SparseMatrix<double> H;
-  Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-  bool sparse_ok = false;
-};
-
-const SlidingWindow::HessianFactorization& SlidingWindow::factorization() const {
-  if (factorization_ && factorization_->version == version_) return *factorization_;
-  auto f = std::make_shared<HessianFactorization>();
-  f->version = version_;
-  std::vector<const Factor*> all;
-  for (const Factor& fac : factors_) all.push_back(&fac);
-  f->offset = tangentOffsets(estimatedVariables(), &f->n);
-  // The window's Hessian is sparse (a chain of epochs plus the calibration and ambiguity columns):
-  // a sparse factorization is ~10x cheaper than a dense one at window 30, and CHOLMOD's ordering
-  // ~15x cheaper than Eigen's own AMD (measured, docs/results.md).
-  // CHOLMOD reads the lower triangle only.
-  std::vector<Eigen::Triplet<double>> triplets;
-  forEachWhitenedFactor(
-      f->offset, all,
-      [&](const std::vector<Segment>& segments, const Eigen::MatrixXd& Hf) {
-        for (const Segment& u : segments) {
-          for (const Segment& v : segments) {
-            if (v.global > u.global) continue;
-            for (int j = 0; j < v.size; ++j) {
-              for (int i = u.global == v.global ? j : 0; i < u.size; ++i) {
-                triplets.emplace_back(u.global + i, v.global + j, Hf(u.local + i, v.local + j));
-              }
-            }
-          }
-        }
-      },
-      nullptr);
-  f->H.resize(f->n, f->n);
-  f->H.setFromTriplets(triplets.begin(), triplets.end());
-  f->ldlt.cholmod().print = 0;  // a singular H is handled below, not printed
-  f->ldlt.compute(f->H);
-  f->sparse_ok = f->ldlt.info() == Eigen::Success;
-  factorization_ = f;
-  return *factorization_;
-}
-
-Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
-  const HessianFactorization& f = factorization();
-  std::vector<int> idx;
-  for (const std::string& name : names) {
-    const auto it = f.offset.find(name);
-    if (it == f.offset.end())
-      throw std::out_of_range("no estimated window variable '" + name + "'");
-    for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
-  }
-  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(f.n, static_cast<long>(idx.size()));
-  for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
-  Eigen::MatrixXd X;
-  if (f.sparse_ok) X = f.ldlt.solve(E);
-  if (!f.sparse_ok || !X.allFinite()) {
-    // A direction nothing observes: the dense pivoting LDLT still returns the observed part.
-    X = Eigen::MatrixXd(f.H).selfadjointView<Eigen::Lower>().ldlt().solve(E);
-  }
-  Eigen::MatrixXd C(idx.size(), idx.size());
-  for (size_t r = 0; r < idx.size(); ++r) C.row(static_cast<long>(r)) = X.row(idx[r]);
-  return 0.5 * (C + C.transpose());
-}
-
 void SlidingWindow::marginalize(const std::vector<std::string>& names) {
   ++version_;
+  ++structure_;
   const std::set<std::string> drop(names.begin(), names.end());
   std::vector<const Factor*> touching;
   std::set<std::string> keep_set;

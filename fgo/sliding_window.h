@@ -1,6 +1,6 @@
-// SlidingWindow: the factor graph's variables and factors, its Ceres solve, its linearization
-// (Hessian and gradient over chosen variables, for covariances and ambiguity resolution), and
-// marginalization of variables into a first-estimate linear prior (Schur complement).
+// SlidingWindow: the factor graph's variables and factors, their least-squares solve (giocal's own
+// Gauss-Newton on the sparse Hessian, or Ceres), covariances from the solve's last factorization,
+// and marginalization of variables into a first-estimate linear prior (Schur complement).
 #pragma once
 
 #include <Eigen/Core>
@@ -24,8 +24,14 @@ struct Factor {
   std::shared_ptr<const Eigen::MatrixXd> sqrt_info = nullptr;
 };
 
+/// How the window is solved. Both minimize the same robust cost; Gauss-Newton forms the sparse
+/// Hessian once per iteration and keeps its last factorization for the covariances (faster, the
+/// default); Ceres (trust region started as Gauss-Newton) is the reference it is tested against.
+enum class WindowSolver { kGaussNewton, kCeres };
+
 class SlidingWindow {
  public:
+  void setSolver(WindowSolver solver) { solver_ = solver; }
   /// `block.name` is the variable's name; values are ambient ([w,x,y,z] for rotations).
   void addVariable(const StateBlock& block, const Eigen::VectorXd& value);
   void removeVariable(const std::string& name);  // and every factor on it
@@ -48,7 +54,8 @@ class SlidingWindow {
     int iterations = 0;
     double final_cost = 0.0;
   };
-  /// Ceres' default relative cost-change tolerance is 1e-6.
+  /// Stops when an iteration lowers the cost by less than `function_tolerance` of it (Ceres'
+  /// default, 1e-6), the step is below 1e-8 relative, or after `max_iterations` steps.
   SolveReport solve(int max_iterations, double function_tolerance = 1e-6);
 
   /// Whitened Gauss-Newton system over `order` (tangent, in that order) from `factors` at the
@@ -57,8 +64,9 @@ class SlidingWindow {
                  Eigen::MatrixXd& H, Eigen::VectorXd& b) const;
   /// The estimated variables that have factors, in a fixed order.
   std::vector<std::string> estimatedVariables() const;
-  /// Marginal covariance (tangent) of `names` from the whole window's Hessian. The factorization
-  /// is kept until the window changes: the covariances asked for at one state share it.
+  /// Marginal covariance (tangent) of `names` from the whole window's robust Hessian (held
+  /// components keep their factors' information). The factorization is kept until the window
+  /// changes: the covariances asked for at one state, and after a Gauss-Newton solve, share it.
   Eigen::MatrixXd covariance(const std::vector<std::string>& names) const;
 
   /// Removes `names` and the factors on them, leaving one linear prior on their neighbours.
@@ -69,29 +77,56 @@ class SlidingWindow {
   struct Segment {
     int global, local, size;
   };
-  /// Receives one factor's whitened J^T J over its window variables.
-  using FactorVisitor =
-      std::function<void(const std::vector<Segment>& segments, const Eigen::MatrixXd& Hf)>;
-  /// Tangent offset of each of `order`'s variables; `size` gets the total.
-  std::map<std::string, int> tangentOffsets(const std::vector<std::string>& order, int* size) const;
-  /// Whitens and linearizes `factors` at the current values, handing each factor's J^T J to
-  /// `visit` and adding J^T r into *b unless b is null; variables not in `offset` are ignored.
-  void forEachWhitenedFactor(const std::map<std::string, int>& offset,
-                             const std::vector<const Factor*>& factors, const FactorVisitor& visit,
-                             Eigen::VectorXd* b) const;
-
   struct Variable {
     StateBlock block;
     Eigen::VectorXd value;
     bool constant = false;
     std::vector<int> held;
   };
+  /// One factor's place in a linearization: its variables, and the columns of those in the
+  /// linearization's order (`blocks`: their model block indices).
+  struct FactorLayout {
+    const Factor* factor = nullptr;
+    std::vector<const Variable*> vars;
+    std::vector<Segment> segments;
+    std::vector<size_t> blocks;
+    int cols = 0;
+  };
+  /// Receives factor k's whitened J^T J over its window variables.
+  using FactorVisitor =
+      std::function<void(size_t k, const FactorLayout& layout, const Eigen::MatrixXd& Hf)>;
+  /// Tangent offset of each of `order`'s variables; `size` gets the total.
+  std::map<std::string, int> tangentOffsets(const std::vector<std::string>& order, int* size) const;
+  /// The layouts of `factors` over the variables in `offset` (others are left out); factors with
+  /// none of them are skipped.
+  std::vector<FactorLayout> layouts(const std::map<std::string, int>& offset,
+                                    const std::vector<const Factor*>& factors) const;
+  /// Whitens and linearizes the factors at the current values, handing each factor's J^T J to
+  /// `visit` and adding J^T r into *b unless b is null.
+  /// `robust`: Huber factors beyond their threshold are down-weighted by sqrt(rho') (as Ceres
+  /// does for a loss with rho'' <= 0), and *cost (unless null) gets sum rho(|r|^2) / 2.
+  void forEachWhitenedFactor(const std::vector<FactorLayout>& factors, const FactorVisitor& visit,
+                             Eigen::VectorXd* b, bool robust = false, double* cost = nullptr) const;
+  SolveReport solveWithCeres(int max_iterations, double function_tolerance);
+  SolveReport solveGaussNewton(int max_iterations, double function_tolerance);
+
   std::map<std::string, Variable> vars_;
   std::vector<Factor> factors_;
-  long version_ = 0;  // bumped by every change of variables, values or factors
-  struct HessianFactorization;
-  mutable std::shared_ptr<const HessianFactorization> factorization_;
-  const HessianFactorization& factorization() const;
+  long version_ = 0;    // bumped by every change of variables, values or factors
+  long structure_ = 0;  // bumped by every change of variables or factors (not of values)
+  WindowSolver solver_ = WindowSolver::kGaussNewton;
+  /// The robust Hessian, gradient and cost of the whole window at one version of it, factorized
+  /// on first use.
+  struct Linearization;
+  /// CHOLMOD's ordering and symbolic factor of one structure, shared by its linearizations.
+  struct SymbolicFactor;
+  std::shared_ptr<SymbolicFactor> plan() const;  // of the current structure
+  std::shared_ptr<Linearization> linearizeWindow() const;
+  mutable std::shared_ptr<Linearization> linearization_;
+  mutable std::shared_ptr<SymbolicFactor> symbolic_;
+  mutable long linearizations_ = 0;
+  /// The current version's linearization, factorized.
+  const Linearization& factorization() const;
 };
 
 }  // namespace giocal
