@@ -202,14 +202,14 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
 
 void FactorGraphCore::outputTrajectory(const FgoEpoch& from, const FgoEpoch& to) {
   const NavState x0 = nav(from);
+  // One preintegration from `from`, continued to each output time (not restarted per output).
+  ImuPreintegration pre(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b), frame_.omega_ie_n(),
+                        x0.b_a, x0.b_g);
+  double integrated_to = from.t;
   while (next_output_ <= to.t + 1e-9) {
-    NavState x = x0;
-    if (next_output_ > from.t) {
-      ImuPreintegration pre(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b),
-                            frame_.omega_ie_n(), x0.b_a, x0.b_g);
-      pre.integrateSamples(in_.imu, from.t, next_output_);
-      x = pre.predict(x0);
-    }
+    if (next_output_ > integrated_to) pre.integrateSamples(in_.imu, integrated_to, next_output_);
+    integrated_to = std::max(integrated_to, next_output_);
+    const NavState x = next_output_ > from.t ? pre.predict(x0) : x0;
     trajectory_.push_back(truthRow(frame_, x, std::max(next_output_, from.t)));
     next_output_ += 1.0 / o_.output_rate_hz;
   }

@@ -22,7 +22,7 @@ struct SlidingWindow::SymbolicFactor {
   std::vector<std::vector<int>> dest;   // per layout: where each lower entry of its J^T J goes
   long factored = -1;                   // the linearization whose numbers `ldlt` holds
   bool ok = false;
-  Eigen::CholmodSimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> ldlt;
 };
 
 struct SlidingWindow::Linearization {
@@ -125,23 +125,77 @@ std::shared_ptr<SlidingWindow::SymbolicFactor> SlidingWindow::plan() const {
   p->layouts = layouts(p->offset, all);
   // The window's Hessian is sparse (a chain of epochs plus the calibration and ambiguity columns):
   // a sparse factorization is ~10x cheaper than a dense one at window 30, and CHOLMOD's ordering
-  // ~15x cheaper than Eigen's own AMD (measured, docs/results.md).
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (const FactorLayout& l : p->layouts) {
-    forEachLowerEntry(l.segments,
-                      [&](int row, int col, int, int) { triplets.emplace_back(row, col, 0.0); });
+  // ~15x cheaper than Eigen's own AMD (measured, docs/results.md). Its lower triangle's pattern is
+  // built block by block: per variable (a column block), the variables at or after it that share
+  // a factor with it (row blocks, its own first).
+  const int n = p->n;
+  std::vector<int> block_of(static_cast<size_t>(n), -1), start, size;
+  for (const std::string& name : order) {
+    block_of[static_cast<size_t>(p->offset.at(name))] = static_cast<int>(start.size());
+    start.push_back(p->offset.at(name));
+    size.push_back(vars_.at(name).block.tangentSize());
   }
-  p->pattern.resize(p->n, p->n);
-  p->pattern.setFromTriplets(triplets.begin(), triplets.end());
-  p->pattern.makeCompressed();
-  const int* outer = p->pattern.outerIndexPtr();
-  const int* inner = p->pattern.innerIndexPtr();
+  // The factors on each variable; then per variable its distinct neighbours at or after it
+  // (marked once each rather than collected with repeats and sorted).
+  std::vector<std::vector<const FactorLayout*>> on(start.size());
+  for (const FactorLayout& l : p->layouts) {
+    for (const Segment& v : l.segments) on[static_cast<size_t>(block_of[v.global])].push_back(&l);
+  }
+  std::vector<std::vector<int>> below(start.size());  // row-block starts per column block
+  std::vector<int> marked(start.size(), -1);
+  for (size_t c = 0; c < start.size(); ++c) {
+    for (const FactorLayout* l : on[c]) {
+      for (const Segment& u : l->segments) {
+        const int r = block_of[u.global];
+        if (u.global < start[c] || marked[static_cast<size_t>(r)] == static_cast<int>(c)) continue;
+        marked[static_cast<size_t>(r)] = static_cast<int>(c);
+        below[c].push_back(u.global);
+      }
+    }
+  }
+  std::vector<std::vector<int>> rows_before(start.size());  // per row block, in a column below
+  std::vector<int> outer(static_cast<size_t>(n) + 1, 0), inner;
+  for (size_t c = 0; c < start.size(); ++c) {
+    std::vector<int>& rows = below[c];
+    std::sort(rows.begin(), rows.end());
+    int before = 0;
+    for (int r : rows) {
+      rows_before[c].push_back(before);
+      if (r != start[c]) before += size[static_cast<size_t>(block_of[r])];
+    }
+    for (int j = 0; j < size[c]; ++j) {
+      outer[static_cast<size_t>(start[c] + j)] = static_cast<int>(inner.size());
+      for (int r : rows) {
+        const int first = r == start[c] ? r + j : r;
+        for (int i = first; i < r + size[static_cast<size_t>(block_of[r])]; ++i) inner.push_back(i);
+      }
+    }
+  }
+  outer[static_cast<size_t>(n)] = static_cast<int>(inner.size());
+  const std::vector<double> zeros(inner.size(), 0.0);
+  p->pattern = Eigen::Map<const Eigen::SparseMatrix<double>>(
+      n, n, static_cast<long>(inner.size()), outer.data(), inner.data(), zeros.data());
+  // Where each entry of a factor's J^T J goes, in forEachLowerEntry's order.
   for (const FactorLayout& l : p->layouts) {
     std::vector<int>& d = p->dest.emplace_back();
-    forEachLowerEntry(l.segments, [&](int row, int col, int, int) {
-      d.push_back(static_cast<int>(
-          std::lower_bound(inner + outer[col], inner + outer[col + 1], row) - inner));
-    });
+    for (const Segment& u : l.segments) {
+      for (const Segment& v : l.segments) {
+        if (v.global > u.global) continue;
+        const size_t c = static_cast<size_t>(block_of[v.global]);
+        const std::vector<int>& rows = below[c];
+        const size_t at = static_cast<size_t>(std::lower_bound(rows.begin(), rows.end(), u.global) -
+                                              rows.begin());
+        for (int j = 0; j < v.size; ++j) {
+          const int col = v.global + j;
+          // Column j of a diagonal block starts at its row j; an off-diagonal block's rows follow
+          // the diagonal block's remaining rows and the blocks before it.
+          const int base = u.global == v.global ? outer[static_cast<size_t>(col)] - j
+                                                : outer[static_cast<size_t>(col)] + (v.size - j) +
+                                                      rows_before[c][at];
+          for (int i = u.global == v.global ? j : 0; i < u.size; ++i) d.push_back(base + i);
+        }
+      }
+    }
   }
   p->ldlt.cholmod().print = 0;  // a singular H is handled by the callers, not printed
   p->ldlt.analyzePattern(p->pattern);
