@@ -64,40 +64,56 @@ void ImuPreintegration::addStep(const Step& s) {
   const Vec3 dv_step = dR_ * G1 * a * dt;
   const Vec3 dp_step = dR_ * G2 * a * dt2;
 
-  // Error-state transition over [dp, dtheta, dv, dba, dbg] and noise input [n_g, n_a, n_bg, n_ba].
-  Eigen::Matrix<double, 15, 15> A = Eigen::Matrix<double, 15, 15>::Identity();
-  Eigen::Matrix<double, 15, 12> B = Eigen::Matrix<double, 15, 12>::Zero();
+  // Error-state transition over [dp, dtheta, dv, dba, dbg]: A = [A9 Ab; 0 I], the biases carried
+  // unchanged, so only the first nine rows move. cov <- A cov A^T + B Q B^T is formed blockwise
+  // (a third of the full 15x15 products' work; this runs for every IMU sample).
+  Eigen::Matrix<double, 9, 9> A9 = Eigen::Matrix<double, 9, 9>::Identity();
+  Eigen::Matrix<double, 9, 6> Ab = Eigen::Matrix<double, 9, 6>::Zero();
   const Mat3 Ga_bg_v = 0.5 * dR_ * skew(a) * dt2;       // dv by a gyro error
   const Mat3 Ga_bg_p = dR_ * skew(a) * dt2 * dt / 6.0;  // dp by a gyro error
-  A.block<3, 3>(kP, kR) = -dR_ * skew(G2 * a) * dt2;
-  A.block<3, 3>(kP, kV) = Mat3::Identity() * dt;
-  A.block<3, 3>(kP, kBa) = -dR_ * G2 * dt2;
-  A.block<3, 3>(kP, kBg) = Ga_bg_p;
-  A.block<3, 3>(kR, kR) = E.transpose();
-  A.block<3, 3>(kR, kBg) = -Jr * dt;
-  A.block<3, 3>(kV, kR) = -dR_ * skew(G1 * a) * dt;
-  A.block<3, 3>(kV, kBa) = -dR_ * G1 * dt;
-  A.block<3, 3>(kV, kBg) = Ga_bg_v;
-  B.block<3, 3>(kP, 0) = Ga_bg_p;
-  B.block<3, 3>(kP, 3) = -dR_ * G2 * dt2;
-  B.block<3, 3>(kR, 0) = -Jr * dt;
-  B.block<3, 3>(kV, 0) = Ga_bg_v;
-  B.block<3, 3>(kV, 3) = -dR_ * G1 * dt;
-  B.block<3, 3>(kBg, 6).setIdentity();
-  B.block<3, 3>(kBa, 9).setIdentity();
+  const Mat3 Ga_p = -dR_ * G2 * dt2, Ga_v = -dR_ * G1 * dt;
+  A9.block<3, 3>(kP, kR) = -dR_ * skew(G2 * a) * dt2;
+  A9.block<3, 3>(kP, kV) = Mat3::Identity() * dt;
+  A9.block<3, 3>(kR, kR) = E.transpose();
+  A9.block<3, 3>(kV, kR) = -dR_ * skew(G1 * a) * dt;
+  Ab.block<3, 3>(kP, kBa - 9) = Ga_p;
+  Ab.block<3, 3>(kP, kBg - 9) = Ga_bg_p;
+  Ab.block<3, 3>(kR, kBg - 9) = -Jr * dt;
+  Ab.block<3, 3>(kV, kBa - 9) = Ga_v;
+  Ab.block<3, 3>(kV, kBg - 9) = Ga_bg_v;
+  // Noise inputs: white gyro and accelerometer noise into the first nine rows, the bias random
+  // walks straight into the bias rows.
+  Eigen::Matrix<double, 9, 3> B_g, B_a;
+  B_g << Ga_bg_p, -Jr * dt, Ga_bg_v;
+  B_a << Ga_p, Mat3::Zero(), Ga_v;
 
   const double sg = noise_.gyro_noise_density, sa = noise_.accel_noise_density;
   const double eg = s.extra_gyro_density, ea = s.extra_accel_density;
-  Eigen::Matrix<double, 12, 1> q;
-  q << Eigen::Vector3d::Constant((sg * sg + eg * eg) / dt),
-      Eigen::Vector3d::Constant((sa * sa + ea * ea) / dt),
-      Eigen::Vector3d::Constant(noise_.gyro_bias_random_walk * noise_.gyro_bias_random_walk * dt),
-      Eigen::Vector3d::Constant(noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt);
-  cov_ = A * cov_ * A.transpose() + B * q.asDiagonal() * B.transpose();
+  const double q_g = (sg * sg + eg * eg) / dt, q_a = (sa * sa + ea * ea) / dt;
+  const Eigen::Matrix<double, 9, 9> C11 = cov_.topLeftCorner<9, 9>();
+  const Eigen::Matrix<double, 9, 6> C12 = cov_.topRightCorner<9, 6>();
+  const Eigen::Matrix<double, 6, 6> C22 = cov_.bottomRightCorner<6, 6>();
+  Eigen::Matrix<double, 9, 9> T;
+  T.noalias() = A9 * C11;
+  T.noalias() += Ab * C12.transpose();
+  Eigen::Matrix<double, 9, 6> U;
+  U.noalias() = A9 * C12;
+  U.noalias() += Ab * C22;
+  Eigen::Matrix<double, 9, 9> C11_new;
+  C11_new.noalias() = T * A9.transpose();
+  C11_new.noalias() += U * Ab.transpose();
+  C11_new.noalias() += q_g * B_g * B_g.transpose();
+  C11_new.noalias() += q_a * B_a * B_a.transpose();
+  cov_.topLeftCorner<9, 9>() = C11_new;
+  cov_.topRightCorner<9, 6>() = U;
+  cov_.bottomLeftCorner<6, 9>() = U.transpose();
+  cov_.block<3, 3>(kBa, kBa).diagonal().array() +=
+      noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt;
+  cov_.block<3, 3>(kBg, kBg).diagonal().array() +=
+      noise_.gyro_bias_random_walk * noise_.gyro_bias_random_walk * dt;
 
   // Bias Jacobians follow the same transition; the bias columns are its input.
-  const Eigen::Matrix<double, 9, 9> A9 = A.topLeftCorner<9, 9>();
-  J_bias_ = A9 * J_bias_ + A.topRightCorner<9, 6>();
+  J_bias_ = A9 * J_bias_ + Ab;
 
   // Time moments for the Earth-rotation terms (first order is enough: they scale with 7e-5 rad/s).
   const double tm = dt_sum_ + 0.5 * dt;

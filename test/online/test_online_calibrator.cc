@@ -27,21 +27,23 @@ struct Expected {
   int gnss_epochs;
 };
 
+/// Equal within numerical noise: 1e-3 of each state's sigma. Rounding-level changes to the shared
+/// physics (a product formed blockwise) move the factor graph by up to 1e-4 sigma through its
+/// solver's stopping decisions; any change of the method moves the estimates by far more.
 void expectFinal(const CalibrationRun& run, const Expected& x) {
   ASSERT_TRUE(run.latest);
   const CalibrationEstimate& e = run.final();
   const Eigen::Vector3d rpy = rpyFromRotation(e.calib.q_b_m.toRotationMatrix()) * kRadToDeg;
-  const auto near = [](double a, double b) {
-    EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::abs(b)));
-  };
-  near(e.calib.s_v, x.s_v);
-  near(e.calib.s_w, x.s_w);
-  near(e.calib.p_b_m.x(), x.px);
-  near(e.calib.p_b_m.y(), x.py);
-  near(rpy.x(), x.roll);
-  near(rpy.y(), x.pitch);
-  near(rpy.z(), x.yaw);
-  near(e.sigma()[7], x.sd_yaw);
+  const Eigen::Matrix<double, 8, 1> sd = e.sigma();
+  const auto near = [](double a, double b, double sigma) { EXPECT_NEAR(a, b, 1e-3 * sigma); };
+  near(e.calib.s_v, x.s_v, sd[0]);
+  near(e.calib.s_w, x.s_w, sd[1]);
+  near(e.calib.p_b_m.x(), x.px, sd[2]);
+  near(e.calib.p_b_m.y(), x.py, sd[3]);
+  near(rpy.x(), x.roll, sd[5]);  // sigma() gives the angles in degrees
+  near(rpy.y(), x.pitch, sd[6]);
+  near(rpy.z(), x.yaw, sd[7]);
+  near(sd[7], x.sd_yaw, sd[7]);
   EXPECT_EQ(run.gnss_epochs, x.gnss_epochs);
 }
 
@@ -76,7 +78,7 @@ TEST(OnlineCalibrator, StreamedReplayEqualsTheBatchCalibrators) {
   const CalibrationEstimate &a = own.final(), &b = ceres.final();
   EXPECT_EQ(own.gnss_epochs, ceres.gnss_epochs);
   const Eigen::Matrix<double, 8, 1> sd = b.sigma();
-  const Eigen::Vector3d da = boxMinus(a.calib.q_b_m, b.calib.q_b_m);
+  const Eigen::Vector3d da = boxMinus(a.calib.q_b_m, b.calib.q_b_m) * kRadToDeg;  // as sigma()
   const double diff[8] = {a.calib.s_v - b.calib.s_v,
                           a.calib.s_w - b.calib.s_w,
                           a.calib.p_b_m.x() - b.calib.p_b_m.x(),
