@@ -1,7 +1,7 @@
 #include "common/io/csv_table.h"
 
 #include <algorithm>
-#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -16,13 +16,32 @@ namespace giocal {
 
 namespace {
 
-std::vector<std::string> splitFields(const std::string& line) {
-  std::vector<std::string> out;
-  std::string field;
-  std::istringstream ss(line);
-  while (std::getline(ss, field, ',')) out.push_back(field);
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
+/// The comma-separated fields of `line`, trimmed (views into it: no copies per row).
+void splitFields(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  size_t begin = 0;
+  while (true) {
+    const size_t comma = line.find(',', begin);
+    out.push_back(
+        trimView(line.substr(begin, comma == std::string_view::npos ? comma : comma - begin)));
+    if (comma == std::string_view::npos) break;
+    begin = comma + 1;
+  }
+}
+
+/// A decimal number filling all of `f` (as strtod reads it, a leading '+' included); false if not.
+/// std::from_chars: no locale, no allocation (reading was 44 % of the EKF's run).
+bool parseNumber(std::string_view f, double& v) {
+  if (f.empty()) return false;
+  const std::string_view digits = f[0] == '+' && f.size() > 1 && f[1] != '-' ? f.substr(1) : f;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (end != digits.data() + digits.size()) return false;
+  if (ec == std::errc::result_out_of_range) {
+    v = std::strtod(std::string(f).c_str(), nullptr);  // strtod's overflow and underflow values
+  } else if (ec != std::errc()) {
+    return false;
+  }
+  return true;
 }
 
 std::string joinHeader(const std::vector<std::string>& header) {
@@ -42,10 +61,9 @@ CsvRowReader::CsvRowReader(const std::string& path, const std::vector<std::strin
     : in_(std::make_unique<Stream>()), path_(path), header_(header), ranges_(ranges) {
   in_->in.open(path);
   if (!in_->in) throw DataError(path, 0, "cannot open file");
-  std::vector<std::string> fields;
+  std::vector<std::string_view> fields;
   if (!nextFields(fields)) throw DataError(path, line_no_, "empty file, header missing");
-  std::vector<std::string> names;
-  for (const auto& f : fields) names.push_back(trim(f));
+  std::vector<std::string> names(fields.begin(), fields.end());
   if (names != header) {
     throw DataError(path, line_no_, "header must be '" + joinHeader(header) + "'");
   }
@@ -53,13 +71,12 @@ CsvRowReader::CsvRowReader(const std::string& path, const std::vector<std::strin
 
 CsvRowReader::~CsvRowReader() = default;
 
-bool CsvRowReader::nextFields(std::vector<std::string>& fields) {
-  std::string line;
-  while (std::getline(in_->in, line)) {
+bool CsvRowReader::nextFields(std::vector<std::string_view>& fields) {
+  while (std::getline(in_->in, line_)) {
     ++line_no_;
-    const std::string t = trim(line);
+    const std::string_view t = trimView(line_);
     if (t.empty() || t[0] == '#') continue;
-    fields = splitFields(t);
+    splitFields(t, fields);
     return true;
   }
   if (in_->in.bad()) throw DataError(path_, line_no_, "read error");
@@ -68,11 +85,12 @@ bool CsvRowReader::nextFields(std::vector<std::string>& fields) {
 
 bool CsvRowReader::next(std::vector<double>& row) {
   while (true) {
-    std::vector<std::string> fields;
+    std::vector<std::string_view>& fields = fields_;
     if (!nextFields(fields)) return false;
     if (fields.size() != header_.size()) {
       // A last line cut short by an interrupted recording is damage; elsewhere it is structure.
-      std::vector<std::string> after;
+      const size_t found = fields.size();
+      std::vector<std::string_view> after;
       const long line = line_no_;
       if (fields.size() < header_.size() && !nextFields(after)) {
         ++damage_.cut_last_line;
@@ -81,21 +99,21 @@ bool CsvRowReader::next(std::vector<double>& row) {
       }
       throw DataError(path_, line,
                       "expected " + std::to_string(header_.size()) + " columns, found " +
-                          std::to_string(fields.size()));
+                          std::to_string(found));  // (reading `after` replaced the line)
     }
     row.assign(fields.size(), 0.0);
     bool finite = true;
     for (size_t i = 0; i < fields.size(); ++i) {
-      const std::string f = trim(fields[i]);
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(f.c_str(), &end);
-      if (f.empty() || end != f.c_str() + f.size()) {
+      const std::string_view f = fields[i];
+      double v = 0.0;
+      if (!parseNumber(f, v)) {
         throw DataError(path_, line_no_,
-                        "column '" + header_[i] + "' is not a number: '" + f + "'");
+                        "column '" + header_[i] + "' is not a number: '" + std::string(f) + "'");
       }
       if (!std::isfinite(v)) {
-        if (i == 0) throw DataError(path_, line_no_, "time is not finite: '" + f + "'");
+        if (i == 0) {
+          throw DataError(path_, line_no_, "time is not finite: '" + std::string(f) + "'");
+        }
         finite = false;
         continue;
       }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -49,7 +50,8 @@ class CsvRowReader {
   std::vector<std::string> warnings() const;
 
  private:
-  bool nextFields(std::vector<std::string>& fields);
+  /// The next non-blank, non-comment line's trimmed fields, as views into line_.
+  bool nextFields(std::vector<std::string_view>& fields);
   struct Stream;
   std::unique_ptr<Stream> in_;
   std::string path_;
@@ -59,7 +61,9 @@ class CsvRowReader {
   bool have_prev_ = false;
   double prev_t_ = 0.0;
   CsvDamage damage_;
-  int bad_run_ = 0;  // consecutive rows dropped
+  int bad_run_ = 0;                       // consecutive rows dropped
+  std::string line_;                      // the line last read
+  std::vector<std::string_view> fields_;  // its fields (kept: no allocation per row)
 };
 
 /// Reads `path`, whose first line must equal `header` (comma separated names, spaces ignored).

@@ -109,6 +109,38 @@ TEST(ImuCsv, SkipsCommentsAndBlankLines) {
   EXPECT_EQ(readImuCsv(path).size(), 1u);
 }
 
+TEST(ImuCsv, NumbersAreReadAsStrtodReadsThem) {
+  // The reader parses with std::from_chars (no locale, no copies); what strtod accepted stays
+  // accepted, with the same values: signs, exponents, spaces around fields, and an overflow is
+  // infinite (a damaged row), not an error.
+  test::TempDir dir;
+  const std::string path =
+      dir.write("imu.csv", kImuHeader + " +1.0 , -0 ,.5,5.,1e-3,+2.5E+1, 9.8\n" +
+                               "2.0,1e400,0,0,0,0,9.8\n3.0,0,0,0,0,0,0x10\n");
+  std::vector<std::string> warnings;
+  try {
+    readImuCsv(path, &warnings);
+    FAIL() << "hexadecimal accepted";
+  } catch (const DataError& e) {
+    EXPECT_EQ(e.line(), 4);  // strtod read "0x10" as 16; giocal's files are decimal
+  }
+  const std::string ok = dir.write("ok.csv", kImuHeader + " +1.0 , -0 ,.5,5.,1e-3,+2.5E+1, 9.8\n" +
+                                                 "2.0,1e400,0,0,0,0,9.8\n3.0,0,0,0,0,0,9.80665\n");
+  const auto imu = readImuCsv(ok, &warnings);
+  ASSERT_EQ(imu.size(), 2u);
+  EXPECT_EQ(imu[0].t, 1.0);
+  EXPECT_EQ(imu[0].gyro, Eigen::Vector3d(-0.0, 0.5, 5.0));
+  EXPECT_EQ(imu[0].acc, Eigen::Vector3d(1e-3, 25.0, 9.8));
+  EXPECT_EQ(imu[1].acc.z(), std::strtod("9.80665", nullptr));
+  ASSERT_EQ(warnings.size(), 1u);  // the overflow row
+  EXPECT_NE(warnings[0].find(":3: 1 rows with NaN or infinite values"), std::string::npos);
+  for (const char* bad : {"+-1", "1e", "--1", "1.0.0", "+"}) {
+    const std::string f =
+        dir.write("bad.csv", kImuHeader + "1.0,0,0," + std::string(bad) + ",0,0,9.8\n");
+    expectDataError([&] { readImuCsv(f); }, f, 2, "not a number");
+  }
+}
+
 TEST(OdomCsv, RoundTripAndBadInput) {
   test::TempDir dir;
   writeOdomCsv(dir.file("odom.csv"), {{10.0, 0.5, 0.1}, {10.04, 0.6, -0.1}});

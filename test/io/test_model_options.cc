@@ -103,6 +103,18 @@ TEST(FgoOptions, ShippedConfigEqualsTheDefaults) {
   test::TempDir dir;
   EXPECT_EQ(readFgoOptions(dir.write("w.yaml", "fgo:\n  window: 7\n")).window, 7);
   EXPECT_THROW(readFgoOptions(dir.write("b.yaml", "fgo:\n  window: 1\n")), DataError);
+  EXPECT_EQ(c.solver, WindowSolver::kGaussNewton);
+  EXPECT_EQ(readFgoOptions(dir.write("c.yaml", "fgo:\n  solver: ceres\n")).solver,
+            WindowSolver::kCeres);
+  try {
+    readFgoOptions(dir.write("s.yaml", "fgo:\n  solver: lm\n"));
+    FAIL() << "unknown solver accepted";
+  } catch (const DataError& e) {
+    EXPECT_EQ(e.line(), 2);
+    EXPECT_NE(std::string(e.what()).find("'lm' is neither gauss_newton nor ceres"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(ModelOptions, OverridesAndBadValues) {
