@@ -85,6 +85,26 @@ def convergence_figure(runs, truth, out):
     plt.close(fig)
 
 
+def delay_figure(delays, out):
+    """The odometer delay state (calibration.estimate_odometer_delay) with its +-3 sigma band."""
+    fig, ax = plt.subplots(figsize=(11, 3.5))
+    for name, d in delays:
+        t0 = d["t"][0]
+        t = [x - t0 for x in d["t"]]
+        v = [1e3 * x for x in d["t_d_odo"]]
+        sd = [1e3 * x for x in d["sd_t_d_odo"]]
+        line, = ax.plot(t, v, label=name)
+        ax.fill_between(t, [a - 3 * s for a, s in zip(v, sd)], [a + 3 * s for a, s in zip(v, sd)],
+                        color=line.get_color(), alpha=0.2)
+    ax.set_ylabel("odometer delay [ms]")
+    ax.set_xlabel("time since the first GNSS epoch [s]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    plt.close(fig)
+
+
 def enu(traj):
     lat0, lon0 = math.radians(traj["lat"][0]), math.radians(traj["lon"][0])
     r = 6378137.0
@@ -280,6 +300,12 @@ def main(argv):
             if truth:
                 nees_figure(runs, truth, os.path.join(out, "nees.png"))
                 figures.append(("nees.png", "NEES over time"))
+        delays = [(n, read_csv(os.path.join(d, "odometer_delay.csv"))) for n, d in calibrate_dirs
+                  if os.path.exists(os.path.join(d, "odometer_delay.csv"))]
+        delays = [(n, d) for n, d in delays if d.get("t")]
+        if delays:
+            delay_figure(delays, os.path.join(out, "odometer_delay.png"))
+            figures.append(("odometer_delay.png", "Odometer delay state (±3σ)"))
         skies = [(n, read_csv(os.path.join(d, "gnss.csv"))) for n, d in calibrate_dirs
                  if os.path.exists(os.path.join(d, "gnss.csv"))]
         skies = [(n, g) for n, g in skies if g.get("t")]

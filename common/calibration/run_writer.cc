@@ -1,5 +1,6 @@
 #include "common/calibration/run_writer.h"
 
+#include <cmath>
 #include <iomanip>
 
 namespace giocal {
@@ -35,6 +36,13 @@ void RunWriter::gnssEpoch(const GnssEpochRecord& g) {
 
 void RunWriter::estimate(const CalibrationEstimate& e) {
   writeRow(calibration_, calibrationCsvRow(e));
+  // The delay has its own file: calibration.csv's columns are a fixed contract (the brief).
+  if (!std::isfinite(e.odometer_delay_s)) return;
+  if (!delay_) {
+    delay_ = &set_.open(prefix_ + "odometer_delay.csv");
+    writeHeader(*delay_, {"t", "t_d_odo", "sd_t_d_odo"});
+  }
+  writeRow(*delay_, {e.t, e.odometer_delay_s, e.odometer_delay_sd_s});
 }
 
 void RunWriter::trajectory(const TruthSample& s) { writeRow(trajectory_, truthCsvRow(s)); }
@@ -44,6 +52,7 @@ void RunWriter::finish(const CalibrationRun& run, const OdometerCalibration* tru
   for (const char* name : {"calibration.csv", "trajectory.csv", "gnss.csv"}) {
     files[name] = set_.close(prefix_ + name);
   }
+  if (delay_) files["odometer_delay.csv"] = set_.close(prefix_ + "odometer_delay.csv");
   set_.open(prefix_ + "summary.json", true) << summaryJson(run, truth, files);
 }
 

@@ -1,5 +1,6 @@
 // RunWriter: writes a calibration run's outputs into an OutputSet as the run goes
-// (calibration.csv, trajectory.csv and gnss.csv row by row, so memory stays flat), then
+// (calibration.csv, trajectory.csv and gnss.csv row by row, so memory stays flat; with the
+// odometer delay estimated, odometer_delay.csv beside calibration.csv), then
 // summary.json naming the others with their sizes; the set moves them into place together
 // (io/output_set.h).
 #pragma once
@@ -29,6 +30,7 @@ class RunWriter : public RunSink {
   std::ostream& calibration_;
   std::ostream& trajectory_;
   std::ostream& gnss_;
+  std::ostream* delay_ = nullptr;  // opened at the first estimate that has the delay state
 };
 
 }  // namespace giocal

@@ -181,6 +181,43 @@ TEST(CalibrationRun, WritesTheBriefsFilesAndKeys) {
   EXPECT_EQ(header, "t,lat,lon,h,ve,vn,vu,qw,qx,qy,qz");
 }
 
+TEST(CalibrationRun, TheOdometerDelayStateGetsItsOwnFileOnlyWhenEstimated) {
+  // calibration.csv's columns are the brief's contract: the delay state goes beside it.
+  CalibrationRun run;
+  run.estimator = "fgo";
+  CalibrationEstimate e;
+  e.cov = Eigen::Matrix<double, 8, 8>::Identity() * 1e-4;
+  for (const bool estimated : {false, true}) {
+    test::TempDir dir;
+    {
+      OutputSet set(dir.path());
+      RunWriter writer(set);
+      for (int k = 0; k < 3; ++k) {
+        e.t = 10.0 + k;
+        e.odometer_delay_s = estimated ? 0.05 - 0.01 * k : std::nan("");
+        e.odometer_delay_sd_s = estimated ? 0.01 : std::nan("");
+        writer.estimate(e);
+      }
+      run.latest = e;
+      writer.finish(run, nullptr);
+      set.commit();
+    }
+    std::ifstream csv(dir.file("odometer_delay.csv"));
+    ASSERT_EQ(static_cast<bool>(csv), estimated);
+    std::ifstream js(dir.file("summary.json"));
+    const nlohmann::json j = nlohmann::json::parse(js);
+    EXPECT_EQ(j["files"].contains("odometer_delay.csv"), estimated);
+    if (!estimated) continue;
+    std::string line;
+    std::vector<std::string> lines;
+    while (std::getline(csv, line)) lines.push_back(line);
+    ASSERT_EQ(lines.size(), 4u);
+    EXPECT_EQ(lines[0], "t,t_d_odo,sd_t_d_odo");
+    EXPECT_EQ(lines[3].substr(0, 3), "12,");
+    EXPECT_NEAR(std::stod(lines[3].substr(3)), 0.03, 1e-15);
+  }
+}
+
 TEST(CalibrationEstimate, SigmaIsTheCsvOrderInMetresAndDegrees) {
   CalibrationEstimate e;
   e.calib.q_b_m = Eigen::Quaterniond(rotationFromRpy(Vec3(1, -2, 3) * kDegToRad));

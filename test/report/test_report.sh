@@ -17,11 +17,16 @@ fail() { echo "FAIL: $*"; exit 1; }
 # Scenes as the simulator writes them for presets with gnss.scenes: shaded in the GNSS figure.
 awk -F, 'NR == 2 { printf "t_start,t_end,type\n%.3f,%.3f,open_sky\n%.3f,%.3f,more_trees\n", \
   $1, $1 + 60, $1 + 60, $1 + 150 }' "$work/data/truth.csv" > "$work/data/scenes.csv"
+# An odometer-delay state's file as a run with calibration.estimate_odometer_delay writes it.
+awk -F, 'NR == 1 { print "t,t_d_odo,sd_t_d_odo"; next } \
+  { printf "%s,%.5f,%.5f\n", $1, 0.05 * (1 - exp(-NR / 20)), 0.05 / sqrt(NR) }' \
+  "$work/cmp/ekf/calibration.csv" > "$work/cmp/ekf/odometer_delay.csv"
 "$giocal" report --run "$work/cmp" --data "$work/data" --out "$work/rep" > /dev/null
 grep -q "scenes shaded: open_sky, more_trees" "$work/rep/index.html" || fail "scenes not named"
 "$giocal" report --run "$work/dr" --data "$work/data" --out "$work/rep_dr" > /dev/null
 
-for f in rep/convergence.png rep/nees.png rep/gnss.png rep/trajectory.png rep_dr/dr_error.png \
+for f in rep/convergence.png rep/nees.png rep/gnss.png rep/trajectory.png rep/odometer_delay.png \
+         rep_dr/dr_error.png \
          rep_dr/trajectory.png; do
   [ -f "$work/$f" ] || fail "$f missing"
   [ "$(stat -c %s "$work/$f")" -gt 10000 ] || fail "$f is $(stat -c %s "$work/$f") bytes"
