@@ -30,7 +30,7 @@ void splitFields(std::string_view line, std::vector<std::string_view>& out) {
 }
 
 /// A decimal number filling all of `f` (as strtod reads it, a leading '+' included); false if not.
-/// std::from_chars: no locale, no allocation (reading was 44 % of the EKF's run).
+/// std::from_chars: no locale, no allocation (reading a paper-preset log: 0.063 -> 0.027 s).
 bool parseNumber(std::string_view f, double& v) {
   if (f.empty()) return false;
   const std::string_view digits = f[0] == '+' && f.size() > 1 && f[1] != '-' ? f.substr(1) : f;
