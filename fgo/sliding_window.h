@@ -54,8 +54,9 @@ class SlidingWindow {
     int iterations = 0;
     double final_cost = 0.0;
   };
-  /// Stops when an iteration lowers the cost by less than `function_tolerance` of it (Ceres'
-  /// default, 1e-6), the step is below 1e-8 relative, or after `max_iterations` steps.
+  /// Stops when a step changes the cost by less than `function_tolerance` of it (Ceres' default,
+  /// 1e-6), when the own solver's next step is predicted to gain less than that, when the step is
+  /// below 1e-8 relative, or after `max_iterations` steps.
   SolveReport solve(int max_iterations, double function_tolerance = 1e-6);
 
   /// Whitened Gauss-Newton system over `order` (tangent, in that order) from `factors` at the
@@ -118,7 +119,9 @@ class SlidingWindow {
   /// The robust Hessian, gradient and cost of the whole window at one version of it, factorized
   /// on first use.
   struct Linearization;
-  /// CHOLMOD's ordering and symbolic factor of one structure, shared by its linearizations.
+  /// One window structure's plan, shared by its linearizations: variable offsets, factor
+  /// layouts, H's pattern and where each factor's entries go, CHOLMOD's ordering and symbolic
+  /// factor (and the numeric factor of the linearization last factorized).
   struct SymbolicFactor;
   std::shared_ptr<SymbolicFactor> plan() const;  // of the current structure
   std::shared_ptr<Linearization> linearizeWindow() const;
@@ -126,7 +129,7 @@ class SlidingWindow {
   mutable std::shared_ptr<SymbolicFactor> symbolic_;
   mutable long linearizations_ = 0;
   /// The current version's linearization, factorized.
-  const Linearization& factorization() const;
+  Linearization& factorization() const;
 };
 
 }  // namespace giocal

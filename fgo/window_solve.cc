@@ -20,9 +20,9 @@ struct SlidingWindow::SymbolicFactor {
   std::vector<FactorLayout> layouts;
   Eigen::SparseMatrix<double> pattern;  // of H's lower triangle, values zero
   std::vector<std::vector<int>> dest;   // per layout: where each lower entry of its J^T J goes
-  long factored = -1;                   // the linearization whose numbers `ldlt` holds
+  long factored = -1;                   // the linearization whose numbers `llt` holds
   bool ok = false;
-  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> llt;
 };
 
 struct SlidingWindow::Linearization {
@@ -39,8 +39,8 @@ struct SlidingWindow::Linearization {
 
   void factorize() {
     if (chol->factored == id) return;
-    chol->ldlt.factorize(H);
-    chol->ok = chol->ldlt.info() == Eigen::Success;
+    chol->llt.factorize(H);
+    chol->ok = chol->llt.info() == Eigen::Success;
     chol->factored = id;
   }
   /// H^-1 X; the dense pivoting LDLT where H is singular (a direction nothing observes) still
@@ -48,7 +48,7 @@ struct SlidingWindow::Linearization {
   Eigen::MatrixXd solve(const Eigen::MatrixXd& X) {
     factorize();
     Eigen::MatrixXd Y;
-    if (chol->ok) Y = chol->ldlt.solve(X);
+    if (chol->ok) Y = chol->llt.solve(X);
     if (!chol->ok || !Y.allFinite()) {
       Y = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>().ldlt().solve(X);
     }
@@ -197,8 +197,8 @@ std::shared_ptr<SlidingWindow::SymbolicFactor> SlidingWindow::plan() const {
       }
     }
   }
-  p->ldlt.cholmod().print = 0;  // a singular H is handled by the callers, not printed
-  p->ldlt.analyzePattern(p->pattern);
+  p->llt.cholmod().print = 0;  // a singular H is handled by the callers, not printed
+  p->llt.analyzePattern(p->pattern);
   return p;
 }
 
@@ -224,14 +224,14 @@ std::shared_ptr<SlidingWindow::Linearization> SlidingWindow::linearizeWindow() c
   return lin;
 }
 
-const SlidingWindow::Linearization& SlidingWindow::factorization() const {
+SlidingWindow::Linearization& SlidingWindow::factorization() const {
   if (!linearization_ || linearization_->version != version_) linearization_ = linearizeWindow();
   linearization_->factorize();
   return *linearization_;
 }
 
 Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
-  Linearization& f = const_cast<Linearization&>(factorization());
+  Linearization& f = factorization();  // (mutable: factorized on first use)
   std::vector<int> idx;
   for (const std::string& name : names) {
     const auto it = f.chol->offset.find(name);
