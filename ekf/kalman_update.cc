@@ -25,20 +25,26 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   const Eigen::LLT<Eigen::MatrixXd> llt(S);
   if (llt.info() != Eigen::Success) return out;
   const Eigen::VectorXd innovation = -rows.residual;
-  out.nis = innovation.dot(llt.solve(innovation));
+  const Eigen::VectorXd s_innovation = llt.solve(innovation);
+  out.nis = innovation.dot(s_innovation);
   if (!(out.nis <= chi2_gate)) return out;
-  const Eigen::MatrixXd K0 = llt.solve(PHt.transpose()).transpose();
-  Eigen::VectorXd gain_innovation = K0 * innovation;
+  Eigen::VectorXd gain_innovation = PHt * s_innovation;  // K0 v, K0 = P H^T S^-1 never formed
   for (int i : held) gain_innovation[i] = 0.0;
   out.dx = gain_innovation;
   // Joseph form (I-KH) P (I-KH)^T + K R K^T with the optimal gain K0 = PH^T S^-1 and K = D K0,
   // D the mask of the states that are not held: with M = K0 S K0^T = K0 (PH^T)^T it expands to
   // P - D M - M D + D M D, which is P - M except on the held x held block, where it is P.
-  Eigen::MatrixXd M = K0 * PHt.transpose();
-  for (int i : held)
-    for (int j : held) M(i, j) = 0.0;
-  P -= M;
-  P = 0.5 * (P + P.transpose());
+  // M = W^T W with W = L^-1 (PH^T)^T (S = L L^T): one triangular solve and a symmetric rank-m
+  // update of P's lower triangle, half the work of forming K0 and K0 (PH^T)^T.
+  const Eigen::MatrixXd W = llt.matrixL().solve(PHt.transpose());
+  Eigen::MatrixXd P_held(held.size(), held.size());
+  for (size_t a = 0; a < held.size(); ++a)
+    for (size_t b = 0; b < held.size(); ++b) P_held(a, b) = P(held[a], held[b]);
+  P.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose(), -1.0);
+  for (long j = 1; j < P.cols(); ++j)
+    for (long i = 0; i < j; ++i) P(i, j) = P(j, i);
+  for (size_t a = 0; a < held.size(); ++a)
+    for (size_t b = 0; b < held.size(); ++b) P(held[a], held[b]) = P_held(a, b);
   out.accepted = true;
   return out;
 }
