@@ -85,7 +85,7 @@ void FactorGraphCore::addNavVariables(const FgoEpoch& e, const NavState& x, doub
   w_.addVariable(vectorBlock(e.bg), x.b_g);
   w_.addVariable(vectorBlock(e.sv, 1), Eigen::VectorXd::Constant(1, s_v));
   w_.addVariable(vectorBlock(e.sw, 1), Eigen::VectorXd::Constant(1, s_w));
-  if (std::count(held_.begin(), held_.end(), calib_index::kSw)) w_.holdComponents(e.sw, {0});
+  if (holds(calib_index::kSw)) w_.holdComponents(e.sw, {0});
   w_.addVariable(vectorBlock(e.cd, 1), Eigen::VectorXd::Constant(1, cd));
 }
 
@@ -123,7 +123,7 @@ void FactorGraphCore::start(const InitialState& init) {
   w_.addVariable(vectorBlock(kPbm), prior.mean.p_b_m);
   w_.addVariable(rotationBlock(kQbm), q_bm);
   w_.addVariable(vectorBlock(kPbg), in_.description.p_b_g);
-  if (o_.hold_p_b_m_z) w_.holdComponents(kPbm, {2});
+  if (holds(calib_index::kP + 2)) w_.holdComponents(kPbm, {2});
   // The initial state and the calibration prior, with their cross-covariance (heading).
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(23, 23);
   P.topLeftCorner(15, 15) = init.P_nav;

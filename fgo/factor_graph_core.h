@@ -3,6 +3,7 @@
 // motion constraints, ambiguity fixes; the oldest epoch is marginalized into a prior.
 #pragma once
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <memory>
@@ -94,6 +95,7 @@ class FactorGraphCore : public EstimatorCore {
   CodeOutlierCheck rover_check_, base_check_;
   MotionDetector motion_;
   std::vector<int> held_;  // calibration states the run keeps at the prior (heldStates)
+  bool holds(int state) const { return std::count(held_.begin(), held_.end(), state) != 0; }
   SlidingWindow w_;
   std::deque<FgoEpoch> epochs_;
   int next_k_ = 0;

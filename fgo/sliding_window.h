@@ -122,11 +122,11 @@ class SlidingWindow {
   /// One window structure's plan, shared by its linearizations: variable offsets, factor
   /// layouts, H's pattern and where each factor's entries go, CHOLMOD's ordering and symbolic
   /// factor (and the numeric factor of the linearization last factorized).
-  struct SymbolicFactor;
-  std::shared_ptr<SymbolicFactor> plan() const;  // of the current structure
+  struct WindowPlan;
+  std::shared_ptr<WindowPlan> plan() const;  // of the current structure
   std::shared_ptr<Linearization> linearizeWindow() const;
   mutable std::shared_ptr<Linearization> linearization_;
-  mutable std::shared_ptr<SymbolicFactor> symbolic_;
+  mutable std::shared_ptr<WindowPlan> plan_;
   mutable long linearizations_ = 0;
   /// The current version's linearization, factorized.
   Linearization& factorization() const;

@@ -12,7 +12,7 @@
 
 namespace giocal {
 
-struct SlidingWindow::SymbolicFactor {
+struct SlidingWindow::WindowPlan {
   long structure = -1;
   int n = 0;
   std::map<std::string, int> offset;
@@ -28,28 +28,26 @@ struct SlidingWindow::SymbolicFactor {
 struct SlidingWindow::Linearization {
   long id = 0;
   long version = -1;
-  int n = 0;
   Eigen::SparseMatrix<double> H;  // lower triangle (CHOLMOD reads only that)
   Eigen::VectorXd b;              // J^T r
   double cost = 0.0;
-  std::vector<int> held;
   // The iterations of one solve, and the covariances after it, have one sparsity pattern: its
   // layout, ordering and symbolic analysis are made once.
-  std::shared_ptr<SymbolicFactor> chol;
+  std::shared_ptr<WindowPlan> plan;
 
   void factorize() {
-    if (chol->factored == id) return;
-    chol->llt.factorize(H);
-    chol->ok = chol->llt.info() == Eigen::Success;
-    chol->factored = id;
+    if (plan->factored == id) return;
+    plan->llt.factorize(H);
+    plan->ok = plan->llt.info() == Eigen::Success;
+    plan->factored = id;
   }
   /// H^-1 X; the dense pivoting LDLT where H is singular (a direction nothing observes) still
   /// returns the observed part.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& X) {
     factorize();
     Eigen::MatrixXd Y;
-    if (chol->ok) Y = chol->llt.solve(X);
-    if (!chol->ok || !Y.allFinite()) {
+    if (plan->ok) Y = plan->llt.solve(X);
+    if (!plan->ok || !Y.allFinite()) {
       Y = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>().ldlt().solve(X);
     }
     return Y;
@@ -61,19 +59,18 @@ struct SlidingWindow::Linearization {
     if (damping > 0.0) {
       Linearization damped;
       damped.id = -1;  // never a window linearization's
-      damped.chol = chol;
-      chol->factored = -2;  // each damping is factorized anew
-      damped.n = n;
+      damped.plan = plan;
+      plan->factored = -2;  // each damping is factorized anew
       damped.H = H;
       damped.b = b;
-      damped.held = held;
-      for (int i = 0; i < n; ++i) {
+      for (int i = 0; i < H.rows(); ++i) {
         damped.H.coeffRef(i, i) += damping * std::max(H.coeff(i, i), 1e-6);
       }
       return damped.step(0.0);
     }
+    const std::vector<int>& held = plan->held;
     const long nh = static_cast<long>(held.size());
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(n, 1 + nh);
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(H.rows(), 1 + nh);
     rhs.col(0) = -b;
     for (long k = 0; k < nh; ++k) rhs(held[static_cast<size_t>(k)], 1 + k) = 1.0;
     const Eigen::MatrixXd X = solve(rhs);
@@ -112,8 +109,8 @@ void forEachLowerEntry(const Segments& segments, Fn&& fn) {
 
 }  // namespace
 
-std::shared_ptr<SlidingWindow::SymbolicFactor> SlidingWindow::plan() const {
-  auto p = std::make_shared<SymbolicFactor>();
+std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
+  auto p = std::make_shared<WindowPlan>();
   p->structure = structure_;
   const std::vector<std::string> order = estimatedVariables();
   p->offset = tangentOffsets(order, &p->n);
@@ -203,20 +200,18 @@ std::shared_ptr<SlidingWindow::SymbolicFactor> SlidingWindow::plan() const {
 }
 
 std::shared_ptr<SlidingWindow::Linearization> SlidingWindow::linearizeWindow() const {
-  if (!symbolic_ || symbolic_->structure != structure_) symbolic_ = plan();
+  if (!plan_ || plan_->structure != structure_) plan_ = plan();
   auto lin = std::make_shared<Linearization>();
   lin->id = ++linearizations_;
   lin->version = version_;
-  lin->chol = symbolic_;
-  lin->n = symbolic_->n;
-  lin->held = symbolic_->held;
-  lin->H = symbolic_->pattern;
-  lin->b = Eigen::VectorXd::Zero(lin->n);
+  lin->plan = plan_;
+  lin->H = plan_->pattern;
+  lin->b = Eigen::VectorXd::Zero(plan_->n);
   double* value = lin->H.valuePtr();
   forEachWhitenedFactor(
-      symbolic_->layouts,
+      plan_->layouts,
       [&](size_t k, const FactorLayout& l, const Eigen::MatrixXd& Hf) {
-        const int* d = symbolic_->dest[k].data();
+        const int* d = plan_->dest[k].data();
         forEachLowerEntry(l.segments, [&](int, int, int i, int j) { value[*d++] += Hf(i, j); });
       },
       &lin->b, true, &lin->cost);
@@ -234,12 +229,12 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names)
   Linearization& f = factorization();  // (mutable: factorized on first use)
   std::vector<int> idx;
   for (const std::string& name : names) {
-    const auto it = f.chol->offset.find(name);
-    if (it == f.chol->offset.end())
+    const auto it = f.plan->offset.find(name);
+    if (it == f.plan->offset.end())
       throw std::out_of_range("no estimated window variable '" + name + "'");
     for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
   }
-  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(f.n, static_cast<long>(idx.size()));
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(f.plan->n, static_cast<long>(idx.size()));
   for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
   const Eigen::MatrixXd X = f.solve(E);
   Eigen::MatrixXd C(idx.size(), idx.size());
@@ -258,7 +253,7 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
   SolveReport report{std::isfinite(lin->cost), 0, lin->cost};
   if (!report.usable) return report;
   std::vector<std::pair<std::string, Eigen::VectorXd>> saved;
-  for (const auto& [name, at] : lin->chol->offset) saved.push_back({name, vars_.at(name).value});
+  for (const auto& [name, at] : lin->plan->offset) saved.push_back({name, vars_.at(name).value});
   double damping = 0.0;
   for (int it = 0; it < max_iterations; ++it) {
     const Eigen::VectorXd dx = lin->step(damping);
@@ -273,7 +268,7 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
       Variable& v = vars_.at(name);
       x = v.value;
       x_norm += x.squaredNorm();
-      const auto d = dx.segment(lin->chol->offset.at(name), v.block.tangentSize());
+      const auto d = dx.segment(lin->plan->offset.at(name), v.block.tangentSize());
       if (v.block.kind == BlockKind::kRotation) {
         quatToWxyz(boxPlus(quatFromWxyz(v.value.data()), d), v.value.data());
       } else {
