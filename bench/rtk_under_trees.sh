@@ -4,11 +4,13 @@
 # runs `giocal rtk` and RTKLIB's rnx2rtkp (continuous AR, ratio 3, L1+L2, 15 deg mask, GPS; Debian
 # package rtklib) on the same files, and prints per scene and seed the fix rate and the fixes more
 # than 5 cm (horizontally) from the true antenna, then the totals over the seeds.
-# Usage: bench/rtk_under_trees.sh [first seed, default 501] [seeds, default 4]
+# Usage: bench/rtk_under_trees.sh [first seed, default 501] [seeds, default 4] [giocal config]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-501}"
 count="${2:-4}"
+config=()
+[ -n "${3:-}" ] && config=(--config "$3")
 giocal="$root/build/apps/giocal"
 preset="$root/config/sim/field.yaml"
 command -v rnx2rtkp >/dev/null || { echo "rnx2rtkp missing: apt-get install rtklib"; exit 1; }
@@ -21,7 +23,7 @@ for seed in $(seq "$first" $((first + count - 1))); do
   "$giocal" simulate --config "$preset" --out "$d" --seed "$seed" > /dev/null
   base=$(python3 -c "import yaml,sys; print(','.join(str(x) for x in yaml.safe_load(open(sys.argv[1]))['gnss']['base_position_ecef']))" "$d/dataset.yaml")
   "$giocal" rtk --rover "$d/rover.obs" --base "$d/base.obs" --nav "$d/nav.rnx" --base-pos "$base" \
-    --out "$d/giocal.pos" > /dev/null
+    "${config[@]}" --out "$d/giocal.pos" > /dev/null
   rnx2rtkp -k "$work/rtklib.conf" -p 2 -f 2 -m 15 -r ${base//,/ } "$d/rover.obs" "$d/base.obs" \
     "$d/nav.rnx" -o "$d/rtklib.pos" 2> /dev/null
   python3 "$root/bench/rtk_fix_audit.py" "$d" "$preset" giocal="$d/giocal.pos" \
