@@ -287,6 +287,7 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
             odo, !in_.description.odom_noise.measures_yaw_rate, rates));
     if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
     w_.addFactor({model, vars, 0.0, tagged("odometer", e.k)});
+    run_->count(Counter::kOdometerIntervals);
   }
   // Scales and clock drift as random walks; the floor keeps a zero density well posed (why 1e-6:
   // docs/design.md).

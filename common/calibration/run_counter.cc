@@ -14,6 +14,8 @@ const char* counterName(Counter c) {
       return "dd_rows";
     case Counter::kGnssRowsRejected:
       return "gnss_rows_rejected";
+    case Counter::kGnssEpochsUnused:
+      return "gnss_epochs_unused";
     case Counter::kCodeOutliers:
       return "code_outliers";
     case Counter::kAmbiguityResets:

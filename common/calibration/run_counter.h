@@ -9,6 +9,7 @@ enum class Counter {
   kCalibrationReopened,  // extrinsic covariance re-opened after rejections in a row
   kDdRows,               // DD code and phase rows used
   kGnssRowsRejected,     // DD rows rejected by a gate or after a solve
+  kGnssEpochsUnused,     // GNSS epochs (LC: position fixes) that updated nothing
   kCodeOutliers,         // pseudo-ranges flagged by the Doppler-predicted change
   kAmbiguityResets,      // ambiguities restarted (slip or rejected phase row)
   kFixesRejected,        // LAMBDA fixes that failed validation

@@ -109,6 +109,8 @@ class Calibrator {
   /// An IMU gap [t0, t1] too long to bridge: events before it are finished, the estimator ends,
   /// and initialization starts again at t1 with the calibration (and covariance) carried over.
   void restartAfterGap(double t0, double t1);
+  /// A warning when more than a fifth of the GNSS epochs (LC: fixes) updated nothing.
+  void warnAboutUnusedGnss();
   const ObsEpoch* nearestBase(double t) const;
   double rel(double t) const { return t - t_first_; }
 
