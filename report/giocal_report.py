@@ -174,6 +174,7 @@ def gnss_figure(skies, out, scenes=()):
                        alpha=0.6, lw=0)
         a.text(0.5 * (t_start + t_end) - t_first, 0.3, kind.replace("_", " "), ha="center",
                fontsize=8)
+    positions_only = not any(p > 0 for _, g in skies for p in g["pdop"])  # NaN compares false
     for name, g in skies:
         t0 = t_first  # one time axis for every run and the scenes
         t = [x - t0 for x in g["t"]]
@@ -181,15 +182,21 @@ def gnss_figure(skies, out, scenes=()):
         b.plot(t, g["pdop"], label=f"{name}: PDOP")
         top = max(g["satellites"] + [1]) + 1
         for flag, colour, what in ((lambda u, f: f, "g", "fixed"),
-                                   (lambda u, f: u and not f, "orange", "float"),
+                                   (lambda u, f: u and not f, "orange",
+                                    "position used" if positions_only else "float"),
                                    (lambda u, f: not u, "r", "not used")):
             pick = [x for x, u, f in zip(t, g["used"], g["fixed"]) if flag(u, f)]
             if pick:
                 a.plot(pick, [top] * len(pick), "|", color=colour, label=f"{name}: {what}")
     a.set_ylabel("satellites above the mask")
     a.set_ylim(bottom=0)
-    b.set_ylabel("PDOP (log scale)")
-    b.set_yscale("log")  # a few epochs with 3-4 satellites reach hundreds
+    if not positions_only:
+        b.set_ylabel("PDOP (log scale)")
+        b.set_yscale("log")  # a few epochs with 3-4 satellites reach hundreds
+    else:  # the LC scheme from a position file: no satellites, no PDOP
+        b.set_ylabel("PDOP")
+        b.text(0.5, 0.5, "no raw GNSS in the run (positions only): no satellites, no PDOP",
+               transform=b.transAxes, ha="center", va="center")
     b.set_xlabel("time since the first GNSS epoch [s]")
     for ax in (a, b):
         ax.grid(True, alpha=0.3)

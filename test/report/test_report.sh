@@ -25,9 +25,18 @@ awk -F, 'NR == 1 { print "t,t_d_odo,sd_t_d_odo"; next } \
 grep -q "scenes shaded: open_sky, more_trees" "$work/rep/index.html" || fail "scenes not named"
 "$giocal" report --run "$work/dr" --data "$work/data" --out "$work/rep_dr" > /dev/null
 
+# A run from positions only (the LC scheme, the real Husky's fixes): no satellites, no PDOP.
+"$giocal" import --bag "$src/data/real/husky-robot-localization/test1.bag" --out "$work/husky" \
+  > /dev/null
+printf 'calibration:\n  lc:\n    use_height: 0\n' > "$work/lc.yaml"
+"$giocal" calibrate --data "$work/husky" --gnss lc --pos "$work/husky/gnss.pos" --config \
+  "$work/lc.yaml" --out "$work/lc" --quiet > /dev/null
+"$giocal" report --run "$work/lc" --data "$work/husky" --out "$work/rep_lc" > /dev/null \
+  || fail "report of an LC run from positions only"
+
 for f in rep/convergence.png rep/nees.png rep/gnss.png rep/trajectory.png rep/odometer_delay.png \
          rep_dr/dr_error.png \
-         rep_dr/trajectory.png; do
+         rep_dr/trajectory.png rep_lc/gnss.png rep_lc/convergence.png; do
   [ -f "$work/$f" ] || fail "$f missing"
   [ "$(stat -c %s "$work/$f")" -gt 10000 ] || fail "$f is $(stat -c %s "$work/$f") bytes"
 done
