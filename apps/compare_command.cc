@@ -38,6 +38,8 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   replay.options = config.calibration;
   replay.fgo_options = config.fgo;
   replay.options_in_effect = config.in_effect;
+  replay.positions = job.positions;
+  replay.options.loosely_coupled = !job.positions.empty();
   replay.stop = job.stop;
   OutputSet outputs(out);
   const std::optional<TruthCalibration> truth_file = readFolderTruth(job.data);

@@ -1,5 +1,5 @@
-// `giocal compare --data <dir> [--config <yaml>] [--out <dir>]`: both estimators on one dataset,
-// side by side.
+// `giocal compare --data <dir> [--gnss lc --pos <file.pos>] [--config <yaml>] [--out <dir>]`: both
+// estimators on one dataset, side by side.
 #pragma once
 
 #include <iosfwd>
@@ -11,6 +11,7 @@ namespace giocal {
 
 struct CompareJob {
   std::string data, config, out;  // out empty: <data>/giocal_compare
+  std::string positions;          // --gnss lc --pos <file.pos>: the LC scheme
   bool overwrite = false;
   bool quiet = false;                 // no progress line
   const StopRequest* stop = nullptr;  // Ctrl-C: the runs stop and nothing is written

@@ -38,7 +38,9 @@ const char* kUsage =
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--gnss tc|lc --pos <file.pos>]\n"
     "                   [--config <yaml>] --out <dir> [--overwrite] [--quiet]\n"
-    "  giocal compare   --data <dir> [--config <yaml>] [--out <dir>] [--overwrite] [--quiet]\n"
+    "  giocal compare   --data <dir> [--gnss tc|lc --pos <file.pos>] [--config <yaml>] [--out "
+    "<dir>]\n"
+    "                   [--overwrite] [--quiet]\n"
     "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
     "guess>\n"
     "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv|file.pos>] "
@@ -166,6 +168,7 @@ int runCalibrateCommand(int argc, char** argv) {
 int runCompareCommand(int argc, char** argv) {
   po::options_description opts("giocal compare");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
+  addGnssOptions(opts);
   addRunOutputOptions(opts, false);
   const po::variables_map vm =
       giocal::parseCommand(argc, argv, opts,
@@ -174,6 +177,7 @@ int runCompareCommand(int argc, char** argv) {
                            "giocal compare --data /tmp/paper --out /tmp/paper-compare");
   giocal::CompareJob job;
   job.data = vm["data"].as<std::string>();
+  job.positions = lcPositions(vm);
   job.config = vm["config"].as<std::string>();
   job.out = vm["out"].as<std::string>();
   job.overwrite = vm.count("overwrite") != 0;

@@ -60,9 +60,8 @@ void writeYaml(const std::string& path, const YAML::Emitter& out, const std::str
 void requireRawGnss(const DatasetDescription& d) {
   if (d.rover_obs.empty()) {
     throw DataError(d.pathOf("dataset.yaml"), 0,
-                    "no raw GNSS (files.rover_obs is empty): calibrate needs rover and base "
-                    "observations, or a position solution (the LC scheme: --gnss lc --pos "
-                    "gnss.pos)");
+                    "no raw GNSS (files.rover_obs is empty): give a position solution instead "
+                    "(the LC scheme: --gnss lc --pos gnss.pos; observability: --pos gnss.pos)");
   }
   if (d.base_obs.empty()) {
     throw DataError(d.pathOf("dataset.yaml"), 0,

@@ -77,6 +77,15 @@ TEST(RealHusky, LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes) {
   }
   // The two estimators see the same drive.
   EXPECT_NEAR(s_v[0], s_v[1], 0.03);
+  // compare takes the LC scheme as calibrate does, and its runs are calibrate's.
+  log.clear();
+  ASSERT_EQ(run("compare --data " + data + " --gnss lc --pos " + pos + " --config " + config +
+                    " --quiet --out " + dir.file("cmp"),
+                &log),
+            0)
+      << log;
+  EXPECT_NEAR(summary(dir.file("cmp") + "/ekf")["final"]["s_v"].get<double>(), s_v[0], 1e-9);
+  EXPECT_NEAR(summary(dir.file("cmp") + "/fgo")["final"]["s_v"].get<double>(), s_v[1], 1e-9);
 }
 
 // With its heights in (the default), the fixes' 30 m fall on flat ground pulls both estimators
