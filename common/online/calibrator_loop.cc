@@ -68,14 +68,20 @@ const ObsEpoch* Calibrator::nearestBase(double t) const {
 
 bool Calibrator::tryInitialize() {
   if (buf_.imu.size() < 2 || buf_.odom.empty()) return false;
-  buf_.rover.epochs.clear();
+  // The epochs an attempt reads are kept between attempts and only the new ones appended:
+  // copying them all again for every attempt cost a tenth of a whole run (callgrind).
+  std::vector<ObsEpoch>& epochs = buf_.rover.epochs;
+  const auto stale =
+      std::find_if(epochs.begin(), epochs.end(), [&](const ObsEpoch& e) { return e.t >= t_from_; });
+  epochs.erase(epochs.begin(), stale);
+  const double newest = epochs.empty() ? -INFINITY : epochs.back().t;
   for (const ObsEpoch& e : rover_) {
     if (!ready(e.t) || e.t > buf_.imu.back().t) break;
-    if (e.t >= t_from_) buf_.rover.epochs.push_back(e);
+    if (e.t >= t_from_ && e.t > newest) epochs.push_back(e);
   }
   // Nothing new since the last attempt (the attempt depends only on complete data before it).
-  if (buf_.rover.epochs.empty() || buf_.rover.epochs.back().t <= last_init_try_) return false;
-  last_init_try_ = buf_.rover.epochs.back().t;
+  if (epochs.empty() || epochs.back().t <= last_init_try_) return false;
+  last_init_try_ = epochs.back().t;
   buf_.description = dataset_;
   buf_.nav = orbits_->nav();
   const auto t0 = std::chrono::steady_clock::now();
@@ -83,7 +89,6 @@ bool Calibrator::tryInitialize() {
   const auto init = findInitialState(buf_, options_, dataset_.initial_calibration,
                                      std::max(t_from_, buf_.imu.front().t), &why, &init_cache_);
   init_time_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  buf_.rover.epochs.clear();
   if (!init) {
     why_not_initialized_ = why;
     if (frontier_ - std::max(t_from_, buf_.imu.front().t) > options_.online.max_init_window_s) {
@@ -101,6 +106,7 @@ bool Calibrator::tryInitialize() {
                            {"heading_sigma_deg", init->heading_sigma * kRadToDeg},
                            {"b_g_z_deg_h", init->x.b_g.z() * kRadToDeg * 3600.0}};
   }
+  epochs.clear();  // the estimator takes rover epochs from the stream, not from here
   core_ = factory_(buf_, *orbits_, *init);
   origin_e_ = init->origin_e;
   init_cache_ = {};
