@@ -252,4 +252,31 @@ CalibratorHealth Calibrator::health() const {
   return h;
 }
 
+namespace {
+constexpr long kMinEpochsToJudge = 20;   // GNSS epochs before a share of unused ones is judged
+constexpr double kMaxUnusedShare = 0.2;  // a larger share of unused GNSS epochs is named
+}  // namespace
+
+void Calibrator::warnAboutUnusedGnss() {
+  // Seen on the real Husky with its heights in: the factor graph kept 52 of 901 fixes, silently.
+  const long unused = run_.counter(Counter::kGnssEpochsUnused);
+  const long offered = unused + run_.gnss_epochs;
+  if (offered < kMinEpochsToJudge ||
+      static_cast<double>(unused) <= kMaxUnusedShare * static_cast<double>(offered))
+    return;
+  const std::string share = std::to_string(unused) + " of " + std::to_string(offered);
+  if (options_.loosely_coupled) {
+    run_.warn(share +
+              " position fixes updated nothing (gated out: counter gnss_epochs_unused): the fixes "
+              "and the IMU/odometer motion disagree, and the calibration rests on the rest. A "
+              "receiver's height often wanders by metres (calibration.lc.use_height: 0 leaves "
+              "it out); sigmas that are too small can be widened (calibration.lc.sigma_scale)");
+  } else {
+    run_.warn(share +
+              " GNSS epochs updated nothing (no row passed the checks: counter "
+              "gnss_epochs_unused): the calibration rests on the rest; giocal check and "
+              "gnss.csv show the satellites and fixes over time");
+  }
+}
+
 }  // namespace giocal

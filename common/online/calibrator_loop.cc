@@ -21,8 +21,6 @@ namespace {
 constexpr double kDelayToTell = 0.01;
 constexpr double kDelaySigmaToTell = 0.01;
 constexpr double kDelayFirstOrder = 0.1;  // [s] the delay state's first-order model
-constexpr long kMinEpochsToJudge = 20;    // GNSS epochs before a share of unused ones is judged
-constexpr double kMaxUnusedShare = 0.2;   // a larger share of unused GNSS epochs is named
 
 /// The dataset with its calibration prior replaced by an estimate (for a re-initialization).
 DatasetDescription withPrior(DatasetDescription d, const CalibrationEstimate& e) {
@@ -375,27 +373,6 @@ void Calibrator::finish() {
   // checking fixes against a truth file) is the caller's, reported apart.
   run_.timing["outputs_s"] = sink_s_;
   run_.wall_time_s = busy_s_ - sink_s_;
-}
-
-void Calibrator::warnAboutUnusedGnss() {
-  // Seen on the real Husky with its heights in: the factor graph kept 52 of 901 fixes, silently.
-  const long unused = run_.counter(Counter::kGnssEpochsUnused);
-  const long offered = unused + run_.gnss_epochs;
-  if (offered < kMinEpochsToJudge || unused <= kMaxUnusedShare * static_cast<double>(offered))
-    return;
-  const std::string share = std::to_string(unused) + " of " + std::to_string(offered);
-  if (options_.loosely_coupled) {
-    run_.warn(share +
-              " position fixes updated nothing (gated out: counter gnss_epochs_unused): the fixes "
-              "and the IMU/odometer motion disagree, and the calibration rests on the rest. A "
-              "receiver's height often wanders by metres (calibration.lc.use_height: 0 leaves "
-              "it out); sigmas that are too small can be widened (calibration.lc.sigma_scale)");
-  } else {
-    run_.warn(share +
-              " GNSS epochs updated nothing (no row passed the checks: counter "
-              "gnss_epochs_unused): the calibration rests on the rest; giocal check and "
-              "gnss.csv show the satellites and fixes over time");
-  }
 }
 
 }  // namespace giocal
