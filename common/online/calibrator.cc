@@ -267,14 +267,15 @@ void Calibrator::warnAboutUnusedGnss() {
   const std::string share = std::to_string(unused) + " of " + std::to_string(offered);
   if (options_.loosely_coupled) {
     run_.warn(share +
-              " position fixes updated nothing (gated out: counter gnss_epochs_unused): the fixes "
-              "and the IMU/odometer motion disagree, and the calibration rests on the rest. A "
+              " position fixes updated nothing (gated out, or no solution at the epoch: counter "
+              "gnss_epochs_unused): where gated out, the fixes and the IMU/odometer motion "
+              "disagree, and the calibration rests on the fixes kept. A "
               "receiver's height often wanders by metres (calibration.lc.use_height: 0 leaves "
               "it out); sigmas that are too small can be widened (calibration.lc.sigma_scale)");
   } else {
     run_.warn(share +
               " GNSS epochs updated nothing (no row passed the checks: counter "
-              "gnss_epochs_unused): the calibration rests on the rest; giocal check and "
+              "gnss_epochs_unused): the calibration rests on the epochs kept; giocal check and "
               "gnss.csv show the satellites and fixes over time");
   }
 }
