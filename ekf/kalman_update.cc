@@ -41,8 +41,7 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   for (size_t a = 0; a < held.size(); ++a)
     for (size_t b = 0; b < held.size(); ++b) P_held(a, b) = P(held[a], held[b]);
   P.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose(), -1.0);
-  for (long j = 1; j < P.cols(); ++j)
-    for (long i = 0; i < j; ++i) P(i, j) = P(j, i);
+  P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
   for (size_t a = 0; a < held.size(); ++a)
     for (size_t b = 0; b < held.size(); ++b) P(held[a], held[b]) = P_held(a, b);
   out.accepted = true;

@@ -7,21 +7,16 @@
 
 namespace giocal {
 
-/// s without leading and trailing blanks, tabs, CR and LF.
-inline std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
-/// The same without copying.
+/// s without leading and trailing blanks, tabs, CR and LF (a view into s, no copy).
 inline std::string_view trimView(std::string_view s) {
   const auto b = s.find_first_not_of(" \t\r\n");
   if (b == std::string_view::npos) return {};
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
 }
+
+/// The same as a string.
+inline std::string trim(const std::string& s) { return std::string(trimView(s)); }
 
 /// A data time in a message: ten significant digits (GPS seconds to 0.1 s).
 inline std::string timeText(double t) {
