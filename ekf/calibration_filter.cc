@@ -158,12 +158,7 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     }
     return rows;
   };
-  if (iterations <= 1) {
-    const MeasurementRows rows = rowsAt(s_);
-    const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices());
-    if (r.accepted) s_.correct(r.dx);
-    return r;
-  }
+  if (iterations <= 1) return updateLinearized(rowsAt(s_), chi2_gate);
   // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
   // state, keep the prior covariance; the last iteration's gain updates the covariance.
   const StateRegistry prior = s_;
@@ -173,7 +168,7 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     const Eigen::VectorXd delta = s_.minus(prior);
     rows.residual += rows.H * (-delta);  // residual linearized about the prior: r(x_i) - H d_i
     Eigen::MatrixXd P = prior.covariance();
-    r = kalmanUpdate(P, rows, it == 0 ? chi2_gate : INFINITY, heldIndices());
+    r = kalmanUpdate(P, rows, it == 0 ? chi2_gate : INFINITY, heldIndices(), &workspace_);
     if (!r.accepted) {
       s_ = prior;
       return r;
@@ -184,6 +179,12 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     s_.covariance() = P;
     if (r.dx.size() && (r.dx - delta).norm() < 1e-9) break;
   }
+  return r;
+}
+
+UpdateResult CalibrationFilter::updateLinearized(const MeasurementRows& rows, double chi2_gate) {
+  const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
+  if (r.accepted) s_.correct(r.dx);
   return r;
 }
 

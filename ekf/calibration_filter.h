@@ -71,6 +71,10 @@ class CalibrationFilter {
   UpdateResult update(const MeasurementModel& model, const std::vector<std::string>& names,
                       double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
 
+  /// One Kalman update from rows already linearized at the current state (a caller that screened
+  /// them need not linearize again); held states as in update().
+  UpdateResult updateLinearized(const MeasurementRows& rows, double chi2_gate);
+
   /// The LC scheme's update: propagates to the solution's time and applies it through the antenna
   /// lever arm (weighted by options.lc), gated at options.chi2_probability; false if gated out.
   bool updatePosition(const PositionFix& fix);
@@ -127,6 +131,7 @@ class CalibrationFilter {
   PoseRates odo_rates_;  // at the interval's ends, for the odometer's delay (when estimated)
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
   int odometer_rejected_in_row_ = 0;
+  KalmanWorkspace workspace_;
 };
 
 }  // namespace giocal

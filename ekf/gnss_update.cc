@@ -103,9 +103,10 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
   // Stage 2: the worst row beyond the innovation gate goes, until none is left; a phase row's
   // ambiguity restarts from code (most likely an undetected slip).
   const std::vector<std::string> nav_names{nav_var::kP, nav_var::kQ, ekf_var::kPbg};
+  MeasurementRows lin;  // the rows that passed, linearized at the state the update starts from
   while (!rows.empty()) {
     const DdGnssModel model(f.frame(), ep.geometry, rows, ep.undiff_variance);
-    const MeasurementRows lin = linearize(model, s.bind(modelNames(model, nav_names)), s.dim());
+    lin = linearize(model, s.bind(modelNames(model, nav_names)), s.dim());
     const Eigen::VectorXd z = normalizedInnovations(s.covariance(), lin);
     // Divergence: the code rows as a whole far outside their predicted spread.
     std::vector<double> code_z;
@@ -129,8 +130,7 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     }
   }
   if (!rows.empty()) {
-    const DdGnssModel model(f.frame(), ep.geometry, rows, ep.undiff_variance);
-    rep.used = f.update(model, modelNames(model, nav_names), INFINITY).accepted;
+    rep.used = f.updateLinearized(lin, INFINITY).accepted;
     rep.dd_rows = static_cast<int>(rows.size());
   }
 

@@ -7,22 +7,20 @@
 
 namespace giocal {
 
-namespace {
-
-/// P H^T with H's zeros skipped: GNSS and odometer rows touch a few blocks of a long state.
-Eigen::MatrixXd covarianceTimesHt(const Eigen::MatrixXd& P, const Eigen::SparseMatrix<double>& H) {
-  return P * H.transpose();
-}
-
-}  // namespace
-
 UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
-                          const std::vector<int>& held) {
+                          const std::vector<int>& held, KalmanWorkspace* workspace) {
   UpdateResult out;
+  KalmanWorkspace local;
+  KalmanWorkspace& ws = workspace ? *workspace : local;
+  const Eigen::Index n = P.rows(), m = rows.H.rows();
+  // H's zeros skipped: GNSS and odometer rows touch a few blocks of a long state.
   const Eigen::SparseMatrix<double> H = rows.H.sparseView();
-  const Eigen::MatrixXd PHt = covarianceTimesHt(P, H);
-  const Eigen::MatrixXd S = H * PHt + rows.R;
-  const Eigen::LLT<Eigen::MatrixXd> llt(S);
+  Eigen::Map<Eigen::MatrixXd> PHt = ws.matrix(KalmanWorkspace::kPHt, n, m);
+  PHt.noalias() = P * H.transpose();
+  Eigen::Map<Eigen::MatrixXd> S = ws.matrix(KalmanWorkspace::kS, m, m);
+  S.noalias() = H * PHt;
+  S += rows.R;
+  const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(S);  // in place: S becomes its factor
   if (llt.info() != Eigen::Success) return out;
   const Eigen::VectorXd innovation = -rows.residual;
   const Eigen::VectorXd s_innovation = llt.solve(innovation);
@@ -36,7 +34,9 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   // P - D M - M D + D M D, which is P - M except on the held x held block, where it is P.
   // M = W^T W with W = L^-1 (PH^T)^T (S = L L^T): one triangular solve and a symmetric rank-m
   // update of P's lower triangle, half the work of forming K0 and K0 (PH^T)^T.
-  const Eigen::MatrixXd W = llt.matrixL().solve(PHt.transpose());
+  Eigen::Map<Eigen::MatrixXd> W = ws.matrix(KalmanWorkspace::kW, m, n);
+  W = PHt.transpose();
+  llt.matrixL().solveInPlace(W);
   Eigen::MatrixXd P_held(held.size(), held.size());
   for (size_t a = 0; a < held.size(); ++a)
     for (size_t b = 0; b < held.size(); ++b) P_held(a, b) = P(held[a], held[b]);
@@ -49,10 +49,16 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
 }
 
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows) {
-  const Eigen::MatrixXd PHt = covarianceTimesHt(P, rows.H.sparseView());
+  // S_ii = h_i P h_i^T over the row's nonzeros only: a row touches a few blocks of the state.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> H = rows.H.sparseView();
   Eigen::VectorXd z(rows.residual.size());
-  for (long i = 0; i < z.size(); ++i) {
-    const double s = rows.H.row(i).dot(PHt.col(i)) + rows.R(i, i);
+  for (Eigen::Index i = 0; i < z.size(); ++i) {
+    double s = rows.R(i, i);
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator a(H, i); a; ++a) {
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator b(H, i); b; ++b) {
+        s += a.value() * P(a.col(), b.col()) * b.value();
+      }
+    }
     z[i] = std::abs(rows.residual[i]) / std::sqrt(std::max(s, 1e-300));
   }
   return z;

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "ekf/kalman_workspace.h"
 #include "ekf/measurement_rows.h"
 
 namespace giocal {
@@ -17,9 +18,10 @@ struct UpdateResult {
 /// Updates P in place and returns the correction; rejects (P unchanged) when the NIS exceeds
 /// `chi2_gate` (pass infinity to disable the gate). Error-state indices in `held` are consider
 /// states (Schmidt): their gain rows are zero, so neither they nor their variance change, while
-/// their uncertainty still enters the update of the others.
+/// their uncertainty still enters the update of the others. `workspace` (optional) keeps the
+/// temporaries' storage between updates.
 UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
-                          const std::vector<int>& held = {});
+                          const std::vector<int>& held = {}, KalmanWorkspace* workspace = nullptr);
 
 /// |innovation| / sqrt(S_ii) of every row, S = H P H^T + R: the per-row outlier test.
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows);

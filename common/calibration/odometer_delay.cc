@@ -64,12 +64,12 @@ void OdometerDelayEstimator::addOdometer(double t, double yaw_rate) {
   block_ = {t, t, 0.0};
 }
 
-double OdometerDelayEstimator::angleAt(double t, std::size_t& cursor) const {
-  if (gyro_.size() < 2 || t < gyro_.front().t || t > gyro_.back().t) return NAN;
+double OdometerDelayEstimator::angleAt(const std::vector<Rate>& g, double t, std::size_t& cursor) {
+  if (g.size() < 2 || t < g.front().t || t > g.back().t) return NAN;
   // The last sample at or before t (the one before the last at the end), walking forward: the
   // callers ask for rising times, so a block costs one pass over its samples.
-  while (cursor + 2 < gyro_.size() && gyro_[cursor + 1].t <= t) ++cursor;
-  const Rate &a = gyro_[cursor], &b = gyro_[cursor + 1];
+  while (cursor + 2 < g.size() && g[cursor + 1].t <= t) ++cursor;
+  const Rate &a = g[cursor], &b = g[cursor + 1];
   if (b.t - a.t > 0.1) return NAN;  // an IMU gap
   // The rate is linear between samples: its integral is quadratic.
   const double h = t - a.t, slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
@@ -79,11 +79,23 @@ double OdometerDelayEstimator::angleAt(double t, std::size_t& cursor) const {
 void OdometerDelayEstimator::compare(const Block& b) {
   const double span = b.t1 - b.t0;
   const double w = b.angle / span;
+  // The samples the candidates read, copied once: indexing the deque for each of the ~1000
+  // look-ups cost more than the comparison itself (callgrind). From the last sample at or
+  // before the earliest time asked to the one after the first at or after the latest, one more
+  // each side for the rounding of the delay grid, so that every look-up finds the samples (and
+  // the NaN cases) it would find in the whole deque.
+  const auto later = [](double t, const Rate& r) { return t < r.t; };
+  auto first = std::upper_bound(gyro_.begin(), gyro_.end(), b.t0 - max_delay_s_, later);
+  for (int k = 0; k < 2 && first != gyro_.begin(); ++k) --first;
+  auto last = std::lower_bound(gyro_.begin(), gyro_.end(), b.t1 + max_delay_s_,
+                               [](const Rate& r, double t) { return r.t < t; });
+  for (int k = 0; k < 2 && last != gyro_.end(); ++k) ++last;
+  window_.assign(first, last);
   std::vector<double> x(sum_x_.size());
   std::size_t at1 = 0, at0 = 0;
   for (std::size_t k = x.size(); k-- > 0;) {  // the largest delay first: rising times
     const double delay = -max_delay_s_ + static_cast<double>(k) * step_s_;
-    x[k] = (angleAt(b.t1 - delay, at1) - angleAt(b.t0 - delay, at0)) / span;
+    x[k] = (angleAt(window_, b.t1 - delay, at1) - angleAt(window_, b.t0 - delay, at0)) / span;
     if (std::isnan(x[k])) return;  // every candidate sees the same blocks
   }
   ++n_;

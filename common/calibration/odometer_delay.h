@@ -39,16 +39,17 @@ class OdometerDelayEstimator {
     double t0, t1, angle;  // odometer heading change over [t0, t1]
   };
   void compare(const Block& b);
-  /// The integral of the rate about up from the first kept sample to t; NaN outside the samples.
-  /// `cursor`: where the previous call found its sample (start at 0; times must rise).
-  double angleAt(double t, std::size_t& cursor) const;
-
-  Eigen::Vector3d up_b_;
-  double max_delay_s_, step_s_;
   struct Rate {
     double t, rate, angle;  // rate about up, and its integral since the first sample
   };
+  /// The integral of the rate about up from the first kept sample to t; NaN outside `samples`.
+  /// `cursor`: where the previous call found its sample (start at 0; times must rise).
+  static double angleAt(const std::vector<Rate>& samples, double t, std::size_t& cursor);
+
+  Eigen::Vector3d up_b_;
+  double max_delay_s_, step_s_;
   std::deque<Rate> gyro_;
+  std::vector<Rate> window_;    // the samples one comparison reads, contiguous
   std::deque<Block> pending_;   // waiting for the IMU
   Block block_{NAN, NAN, 0.0};  // being summed
   double last_odometer_t_ = NAN, last_yaw_rate_ = 0.0;

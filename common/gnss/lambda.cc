@@ -151,6 +151,7 @@ SearchResult integerSearch(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, i
   const Eigen::VectorXd a_int = a.array().round().matrix();
   const Eigen::VectorXd zs = d.Z.transpose() * (a - a_int);
   SearchResult r = searchDecorrelated(d.ltdl.L, d.ltdl.D, zs, m);
+  r.conditional_variances = d.ltdl.D;
   const Eigen::MatrixXd Zt_inv = d.Z.transpose().inverse();
   for (auto& c : r.candidates) c = (Zt_inv * c).array().round().matrix() + a_int;
   return r;
@@ -184,7 +185,7 @@ AmbiguityFix resolveAmbiguities(const Eigen::VectorXd& a, const Eigen::MatrixXd&
         out.fixed = true;
         out.indices = keep;
         out.values = r.candidates[0];
-        out.success_rate = bootstrapSuccessRate(decorrelate(Qs).ltdl.D);
+        out.success_rate = bootstrapSuccessRate(r.conditional_variances);
         return out;
       }
     }

@@ -28,6 +28,7 @@ Decorrelation decorrelate(const Eigen::MatrixXd& Q);
 struct SearchResult {
   std::vector<Eigen::VectorXd> candidates;
   std::vector<double> squared_norms;
+  Eigen::VectorXd conditional_variances;  // D of the decorrelated ambiguities (success rate)
 };
 SearchResult integerSearch(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, int m = 2);
 

@@ -19,6 +19,28 @@ Mat3 gamma2(const Vec3& phi) {
          (t2 + 2.0 * std::cos(th) - 2.0) / (2.0 * t2 * t2) * K * K;
 }
 
+// The moving rows of the error-state transition, F = [A9 Ab], by their 3x3 blocks over
+// [dp, dtheta, dv | dba, dbg]: A9 = [I A_pr I*dt; 0 A_rr 0; 0 A_vr I], Ab = [B_pa B_pg; 0 B_rg;
+// B_va B_vg].
+struct Transition {
+  double dt = 0.0;
+  Mat3 A_pr, A_rr, A_vr, B_pa, B_pg, B_rg, B_va, B_vg;
+
+  /// F [X; Y] for the nine moving rows X and the six bias rows Y of a 15 x C matrix.
+  template <int C>
+  Eigen::Matrix<double, 9, C> apply(const Eigen::Matrix<double, 9, C>& X,
+                                    const Eigen::Matrix<double, 6, C>& Y) const {
+    const auto X_p = X.template topRows<3>(), X_r = X.template middleRows<3>(3);
+    const auto X_v = X.template bottomRows<3>();
+    const auto Y_a = Y.template topRows<3>(), Y_g = Y.template bottomRows<3>();
+    Eigen::Matrix<double, 9, C> out;
+    out.template topRows<3>() = X_p + dt * X_v + A_pr * X_r + B_pa * Y_a + B_pg * Y_g;
+    out.template middleRows<3>(3) = A_rr * X_r + B_rg * Y_g;
+    out.template bottomRows<3>() = X_v + A_vr * X_r + B_va * Y_a + B_vg * Y_g;
+    return out;
+  }
+};
+
 }  // namespace
 
 using namespace imu_index;
@@ -64,58 +86,44 @@ void ImuPreintegration::addStep(const Step& s) {
   const Vec3 dv_step = dR_ * G1 * a * dt;
   const Vec3 dp_step = dR_ * G2 * a * dt2;
 
-  // Error-state transition over [dp, dtheta, dv, dba, dbg]: A = [A9 Ab; 0 I], the biases carried
-  // unchanged, so only the first nine rows move. cov <- A cov A^T + B Q B^T is formed blockwise
-  // (a third of the full 15x15 products' work; this runs for every IMU sample). Lazy products:
-  // at these sizes Eigen's blocked GEMM packs more than it multiplies (callgrind: -31 %).
-  Eigen::Matrix<double, 9, 9> A9 = Eigen::Matrix<double, 9, 9>::Identity();
-  Eigen::Matrix<double, 9, 6> Ab = Eigen::Matrix<double, 9, 6>::Zero();
-  const Mat3 Ga_bg_v = 0.5 * dR_ * skew(a) * dt2;       // dv by a gyro error
-  const Mat3 Ga_bg_p = dR_ * skew(a) * dt2 * dt / 6.0;  // dp by a gyro error
-  const Mat3 Ga_p = -dR_ * G2 * dt2, Ga_v = -dR_ * G1 * dt;
-  A9.block<3, 3>(kP, kR) = -dR_ * skew(G2 * a) * dt2;
-  A9.block<3, 3>(kP, kV) = Mat3::Identity() * dt;
-  A9.block<3, 3>(kR, kR) = E.transpose();
-  A9.block<3, 3>(kV, kR) = -dR_ * skew(G1 * a) * dt;
-  Ab.block<3, 3>(kP, kBa - 9) = Ga_p;
-  Ab.block<3, 3>(kP, kBg - 9) = Ga_bg_p;
-  Ab.block<3, 3>(kR, kBg - 9) = -Jr * dt;
-  Ab.block<3, 3>(kV, kBa - 9) = Ga_v;
-  Ab.block<3, 3>(kV, kBg - 9) = Ga_bg_v;
-  // Noise inputs: white gyro and accelerometer noise into the first nine rows, the bias random
-  // walks straight into the bias rows.
-  Eigen::Matrix<double, 9, 3> B_g, B_a;
-  B_g << Ga_bg_p, -Jr * dt, Ga_bg_v;
-  B_a << Ga_p, Mat3::Zero(), Ga_v;
+  // Error-state transition over [dp, dtheta, dv, dba, dbg]: the biases are carried unchanged, so
+  // only the first nine rows move, F = [A9 Ab], applied by its 3x3 blocks (half of them 0 or I;
+  // this runs for every IMU sample, and the blockwise form does 40 % fewer multiplications).
+  Transition F;
+  F.dt = dt;
+  F.A_pr = -dR_ * skew(G2 * a) * dt2;
+  F.A_rr = E.transpose();
+  F.A_vr = -dR_ * skew(G1 * a) * dt;
+  F.B_pa = -dR_ * G2 * dt2;
+  F.B_va = -dR_ * G1 * dt;
+  F.B_pg = dR_ * skew(a) * dt2 * dt / 6.0;  // dp by a gyro error
+  F.B_rg = -Jr * dt;
+  F.B_vg = 0.5 * dR_ * skew(a) * dt2;  // dv by a gyro error
 
+  // cov <- F cov F^T + noise: M = F cov (9 x 15), then F M^T; the bias rows do not move.
+  const Eigen::Matrix<double, 9, 15> M = F.apply<15>(cov_.topRows<9>(), cov_.bottomRows<6>());
+  Eigen::Matrix<double, 9, 9> C11 =
+      F.apply<9>(M.leftCols<9>().transpose(), M.rightCols<6>().transpose());
+  // Noise inputs: white gyro and accelerometer noise through the bias columns' blocks (a rate
+  // error and a bias error enter alike), the bias random walks straight into the bias rows.
   const double sg = noise_.gyro_noise_density, sa = noise_.accel_noise_density;
   const double eg = s.extra_gyro_density, ea = s.extra_accel_density;
   const double q_g = (sg * sg + eg * eg) / dt, q_a = (sa * sa + ea * ea) / dt;
-  const Eigen::Matrix<double, 9, 9> C11 = cov_.topLeftCorner<9, 9>();
-  const Eigen::Matrix<double, 9, 6> C12 = cov_.topRightCorner<9, 6>();
-  const Eigen::Matrix<double, 6, 6> C22 = cov_.bottomRightCorner<6, 6>();
-  Eigen::Matrix<double, 9, 9> T;
-  T.noalias() = A9.lazyProduct(C11);
-  T.noalias() += Ab.lazyProduct(C12.transpose());
-  Eigen::Matrix<double, 9, 6> U;
-  U.noalias() = A9.lazyProduct(C12);
-  U.noalias() += Ab.lazyProduct(C22);
-  Eigen::Matrix<double, 9, 9> C11_new;
-  C11_new.noalias() = T.lazyProduct(A9.transpose());
-  C11_new.noalias() += U.lazyProduct(Ab.transpose());
-  C11_new.noalias() += q_g * B_g.lazyProduct(B_g.transpose());
-  C11_new.noalias() += q_a * B_a.lazyProduct(B_a.transpose());
-  cov_.topLeftCorner<9, 9>() = C11_new;
-  cov_.topRightCorner<9, 6>() = U;
-  cov_.bottomLeftCorner<6, 9>() = U.transpose();
+  Eigen::Matrix<double, 9, 3> B_g, B_a;
+  B_g << F.B_pg, F.B_rg, F.B_vg;
+  B_a << F.B_pa, Mat3::Zero(), F.B_va;
+  C11.noalias() += q_g * B_g.lazyProduct(B_g.transpose());
+  C11.noalias() += q_a * B_a.lazyProduct(B_a.transpose());
+  cov_.topLeftCorner<9, 9>() = C11;
+  cov_.topRightCorner<9, 6>() = M.rightCols<6>();
+  cov_.bottomLeftCorner<6, 9>() = M.rightCols<6>().transpose();
   cov_.block<3, 3>(kBa, kBa).diagonal().array() +=
       noise_.accel_bias_random_walk * noise_.accel_bias_random_walk * dt;
   cov_.block<3, 3>(kBg, kBg).diagonal().array() +=
       noise_.gyro_bias_random_walk * noise_.gyro_bias_random_walk * dt;
 
   // Bias Jacobians follow the same transition; the bias columns are its input.
-  const Eigen::Matrix<double, 9, 6> J_bias = A9.lazyProduct(J_bias_) + Ab;  // not in place
-  J_bias_ = J_bias;
+  J_bias_ = F.apply<6>(J_bias_, Eigen::Matrix<double, 6, 6>::Identity());
 
   // Time moments for the Earth-rotation terms (first order is enough: they scale with 7e-5 rad/s).
   const double tm = dt_sum_ + 0.5 * dt;
