@@ -173,10 +173,9 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
       s_ = prior;
       return r;
     }
-    StateRegistry next = prior;
-    next.correct(r.dx);
-    s_ = next;
-    s_.covariance() = P;
+    s_ = prior;  // assignment reuses s_'s storage: a fresh copy of the registry cost more
+    s_.correct(r.dx);
+    s_.covariance().swap(P);
     if (r.dx.size() && (r.dx - delta).norm() < 1e-9) break;
   }
   return r;

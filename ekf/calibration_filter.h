@@ -18,7 +18,7 @@
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odom_sample.h"
 #include "common/odometer/odometer_preintegration.h"
-#include "ekf/kalman_update.h"
+#include "common/math/kalman_update.h"
 #include "ekf/state_registry.h"
 
 namespace giocal {

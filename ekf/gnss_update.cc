@@ -1,6 +1,5 @@
 #include "ekf/gnss_update.h"
 
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -17,7 +16,11 @@
 namespace giocal {
 
 std::string ambiguityName(const SatId& sat, char band) {
-  return "N:" + sat.str() + ":" + std::string(1, band);
+  std::string name = "N:";
+  name += sat.str();
+  name += ':';
+  name += band;
+  return name;
 }
 
 namespace {
@@ -188,19 +191,28 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   StateRegistry& s = f.state();
   const long na = static_cast<long>(phase_rows.size());
   if (na < options_.lambda.min_fixed) return;
-  Eigen::SparseMatrix<double> A(na, s.dim());
+  // DD ambiguity k = N(sat) - N(ref): its mean and covariance straight from the states' entries.
+  std::vector<int> i_sat(static_cast<size_t>(na)), i_ref(static_cast<size_t>(na));
   Eigen::VectorXd a(na);
   std::vector<double> el;
   for (long k = 0; k < na; ++k) {
-    const DdObservation& o = phase_rows[static_cast<size_t>(k)];
+    const auto u = static_cast<size_t>(k);
+    const DdObservation& o = phase_rows[u];
     const std::string ns = ambiguityName(o.sat, o.band), nr = ambiguityName(o.ref, o.band);
-    A.insert(k, s.offset(ns)) = 1.0;
-    A.insert(k, s.offset(nr)) = -1.0;
+    i_sat[u] = s.offset(ns);
+    i_ref[u] = s.offset(nr);
     a[k] = s.value(ns)[0] - s.value(nr)[0];
     el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
   }
-  const Eigen::MatrixXd PAt = s.covariance() * A.transpose();
-  const Eigen::MatrixXd Qa = A * PAt;
+  const Eigen::MatrixXd& P = s.covariance();
+  Eigen::MatrixXd Qa(na, na);
+  for (long k = 0; k < na; ++k) {
+    const int sk = i_sat[static_cast<size_t>(k)], rk = i_ref[static_cast<size_t>(k)];
+    for (long l = 0; l < na; ++l) {
+      const int sl = i_sat[static_cast<size_t>(l)], rl = i_ref[static_cast<size_t>(l)];
+      Qa(k, l) = (P(sk, sl) - P(sk, rl)) - (P(rk, sl) - P(rk, rl));
+    }
+  }
   std::vector<int> drop(static_cast<size_t>(na));
   std::iota(drop.begin(), drop.end(), 0);
   std::sort(drop.begin(), drop.end(),

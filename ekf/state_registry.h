@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "common/models/state_block.h"
-#include "ekf/measurement_rows.h"
+#include "common/models/measurement_rows.h"
 
 namespace giocal {
 

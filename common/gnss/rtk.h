@@ -15,6 +15,7 @@
 #include "common/gnss/observation.h"
 #include "common/gnss/spp.h"
 #include "common/gnss/weighting.h"
+#include "common/math/kalman_workspace.h"
 
 namespace giocal {
 
@@ -56,8 +57,8 @@ class RtkFilter {
   int ambiguityIndex(const AmbKey& key) const;
   void addAmbiguity(const AmbKey& key, double value, double variance);
   void removeAmbiguity(const AmbKey& key);
-  bool diverged(const std::vector<DdObservation>& rows, const Eigen::VectorXd& v,
-                const Eigen::MatrixXd& S) const;
+  /// `normalized`: each row's |innovation| / its predicted sigma.
+  bool diverged(const std::vector<DdObservation>& rows, const Eigen::VectorXd& normalized) const;
   bool fixIsConsistent(const DdEpoch& ep, const std::vector<DdObservation>& obs,
                        const std::vector<bool>& active, const Eigen::VectorXd& x_fix) const;
 
@@ -70,6 +71,7 @@ class RtkFilter {
   double t_last_ = 0.0;
   Eigen::VectorXd x_;  // [p (3), v (3), N...]
   Eigen::MatrixXd P_;
+  KalmanWorkspace workspace_;
   std::vector<AmbKey> amb_keys_;        // state order of the ambiguities
   std::map<AmbKey, double> last_seen_;  // rover time each ambiguity was last observed
 };

@@ -1,14 +1,15 @@
 #include "common/gnss/satellite.h"
 
 #include <cctype>
-#include <cstdio>
 
 namespace giocal {
 
 std::string SatId::str() const {
-  char buf[8];
-  std::snprintf(buf, sizeof(buf), "%c%02d", static_cast<char>(sys), prn);
-  return buf;
+  // By hand: the EKF names its ambiguity states with this many times per epoch, and snprintf
+  // cost more than the lookups the names served.
+  if (prn < 0 || prn > 99) return static_cast<char>(sys) + std::to_string(prn);
+  return {static_cast<char>(sys), static_cast<char>('0' + prn / 10),
+          static_cast<char>('0' + prn % 10)};
 }
 
 bool parseSatId(const std::string& text, SatId& out) {

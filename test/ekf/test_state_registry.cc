@@ -5,7 +5,7 @@
 #include "common/math/rotation.h"
 #include "common/math/so3.h"
 #include "common/models/zupt_model.h"
-#include "ekf/kalman_update.h"
+#include "common/math/kalman_update.h"
 #include "ekf/state_registry.h"
 
 namespace giocal {

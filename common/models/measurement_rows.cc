@@ -1,4 +1,4 @@
-#include "ekf/measurement_rows.h"
+#include "common/models/measurement_rows.h"
 
 #include <stdexcept>
 

@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "ekf/kalman_workspace.h"
-#include "ekf/measurement_rows.h"
+#include "common/math/kalman_workspace.h"
+#include "common/models/measurement_rows.h"
 
 namespace giocal {
 
