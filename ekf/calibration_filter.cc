@@ -167,15 +167,14 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     MeasurementRows rows = rowsAt(s_);
     const Eigen::VectorXd delta = s_.minus(prior);
     rows.residual += rows.H * (-delta);  // residual linearized about the prior: r(x_i) - H d_i
-    Eigen::MatrixXd P = prior.covariance();
-    r = kalmanUpdate(P, rows, it == 0 ? chi2_gate : INFINITY, heldIndices(), &workspace_);
-    if (!r.accepted) {
-      s_ = prior;
-      return r;
-    }
-    s_ = prior;  // assignment reuses s_'s storage: a fresh copy of the registry cost more
+    // Values and covariance back to the prior's, then updated in place (whole-registry copies
+    // per iteration cost more than the update itself).
+    s_.setValues(prior);
+    s_.covariance() = prior.covariance();
+    r = kalmanUpdate(s_.covariance(), rows, it == 0 ? chi2_gate : INFINITY, heldIndices(),
+                     &workspace_);
+    if (!r.accepted) return r;  // s_ holds the prior again
     s_.correct(r.dx);
-    s_.covariance().swap(P);
     if (r.dx.size() && (r.dx - delta).norm() < 1e-9) break;
   }
   return r;

@@ -93,6 +93,12 @@ void StateRegistry::correct(const Eigen::VectorXd& dx) {
   }
 }
 
+void StateRegistry::setValues(const StateRegistry& other) {
+  if (other.order_ != order_) throw std::invalid_argument("StateRegistry: different variables");
+  auto from = other.vars_.begin();
+  for (auto& entry : vars_) (entry.second.value = (from++)->second.value);
+}
+
 Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
   Eigen::VectorXd dx(dim());
   for (const auto& [name, v] : vars_) {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "common/models/state_block.h"
 #include "common/models/measurement_rows.h"
+#include "common/models/state_block.h"
 
 namespace giocal {
 
@@ -38,6 +38,9 @@ class StateRegistry {
 
   /// Applies an error-state correction: vectors add, rotations multiply on the right by Exp(d).
   void correct(const Eigen::VectorXd& dx);
+  /// The values of `other` (the same variables), the covariance kept: an iterated update goes
+  /// back to its prior's values without copying the whole registry.
+  void setValues(const StateRegistry& other);
   /// The correction that takes `base` (same variables) to this state: this = base (+) dx.
   Eigen::VectorXd minus(const StateRegistry& base) const;
 

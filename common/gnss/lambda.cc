@@ -11,18 +11,20 @@ namespace giocal {
 
 LtDL factorLtDL(const Eigen::MatrixXd& Qin) {
   const int n = static_cast<int>(Qin.rows());
+  // Q's lower triangle is read, mirrored into the upper one, which is worked on: its columns are
+  // contiguous where the rows of the lower one are strided.
   Eigen::MatrixXd Q = Qin;
+  Q.triangularView<Eigen::StrictlyUpper>() = Q.transpose();
   LtDL f{Eigen::MatrixXd::Zero(n, n), Eigen::VectorXd::Zero(n)};
+  Eigen::VectorXd l(n);  // row i of L before its scaling by L(i, i)
   // Eliminate from the last index down, so that the conditional variances D run last-to-first.
   for (int i = n - 1; i >= 0; --i) {
     f.D[i] = Q(i, i);
     if (!(f.D[i] > 0.0)) throw std::invalid_argument("LAMBDA: covariance is not positive definite");
     const double s = std::sqrt(Q(i, i));
-    for (int j = 0; j <= i; ++j) f.L(i, j) = Q(i, j) / s;
-    for (int j = 0; j < i; ++j) {
-      for (int k = 0; k <= j; ++k) Q(j, k) -= f.L(i, k) * f.L(i, j);
-    }
-    for (int j = 0; j <= i; ++j) f.L(i, j) /= f.L(i, i);
+    for (int j = 0; j <= i; ++j) l[j] = Q(j, i) / s;
+    for (int j = 0; j < i; ++j) Q.col(j).head(j + 1) -= l.head(j + 1) * l[j];
+    for (int j = 0; j <= i; ++j) f.L(i, j) = l[j] / l[i];
   }
   return f;
 }
@@ -31,6 +33,7 @@ namespace {
 
 // Integer Gauss transformation making |L(i, j)| <= 1/2.
 void gauss(Eigen::MatrixXd& L, Eigen::MatrixXd& Z, int i, int j) {
+  if (std::abs(L(i, j)) < 0.5) return;  // rounds to 0: most calls, without the rounding's cost
   const double mu = std::round(L(i, j));
   if (mu == 0.0) return;
   const int n = static_cast<int>(L.rows());
