@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
@@ -191,32 +190,19 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   StateRegistry& s = f.state();
   const long na = static_cast<long>(phase_rows.size());
   if (na < options_.lambda.min_fixed) return;
-  // DD ambiguity k = N(sat) - N(ref): its mean and covariance straight from the states' entries.
-  std::vector<int> i_sat(static_cast<size_t>(na)), i_ref(static_cast<size_t>(na));
+  // DD ambiguity k = N(sat) - N(ref): its mean and covariance from the states' entries.
+  std::vector<std::pair<int, int>> pairs;
   Eigen::VectorXd a(na);
   std::vector<double> el;
   for (long k = 0; k < na; ++k) {
-    const auto u = static_cast<size_t>(k);
-    const DdObservation& o = phase_rows[u];
+    const DdObservation& o = phase_rows[static_cast<size_t>(k)];
     const std::string ns = ambiguityName(o.sat, o.band), nr = ambiguityName(o.ref, o.band);
-    i_sat[u] = s.offset(ns);
-    i_ref[u] = s.offset(nr);
+    pairs.push_back({s.offset(ns), s.offset(nr)});
     a[k] = s.value(ns)[0] - s.value(nr)[0];
     el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
   }
-  const Eigen::MatrixXd& P = s.covariance();
-  Eigen::MatrixXd Qa(na, na);
-  for (long k = 0; k < na; ++k) {
-    const int sk = i_sat[static_cast<size_t>(k)], rk = i_ref[static_cast<size_t>(k)];
-    for (long l = 0; l < na; ++l) {
-      const int sl = i_sat[static_cast<size_t>(l)], rl = i_ref[static_cast<size_t>(l)];
-      Qa(k, l) = (P(sk, sl) - P(sk, rl)) - (P(rk, sl) - P(rk, rl));
-    }
-  }
-  std::vector<int> drop(static_cast<size_t>(na));
-  std::iota(drop.begin(), drop.end(), 0);
-  std::sort(drop.begin(), drop.end(),
-            [&](int i, int j) { return el[static_cast<size_t>(i)] < el[static_cast<size_t>(j)]; });
+  const Eigen::MatrixXd Qa = ddAmbiguityCovariance(s.covariance(), pairs);
+  const std::vector<int> drop = lowestElevationFirst(el);
   AmbiguityFix fix;
   try {
     fix = giocal::resolveAmbiguities(a, Qa, drop, options_.lambda);

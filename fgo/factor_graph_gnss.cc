@@ -3,7 +3,6 @@
 // fixes validated by the fixed solution's phase residuals.
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "common/gnss/lambda.h"
 #include "common/imu/gyro_mean.h"
@@ -199,32 +198,26 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
     amb.push_back(n);
     return static_cast<long>(amb.size()) - 1;
   };
-  std::vector<std::pair<long, long>> pairs;
+  std::vector<std::pair<int, int>> pairs;
   std::vector<double> el;
   for (const DdObservation& o : e.phase_rows) {
-    pairs.push_back({index(ambiguityVar(o.sat, o.band)), index(ambiguityVar(o.ref, o.band))});
+    pairs.push_back({static_cast<int>(index(ambiguityVar(o.sat, o.band))),
+                     static_cast<int>(index(ambiguityVar(o.ref, o.band)))});
     el.push_back(e.dd.geometry[static_cast<size_t>(o.sat_index)].el);
   }
   // Float DD ambiguities and their covariance from the window.
-  const Eigen::MatrixXd C = w_.covariance(amb);
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(na, static_cast<long>(amb.size()));
   Eigen::VectorXd a(na);
   for (long k = 0; k < na; ++k) {
     const auto [i, j] = pairs[static_cast<size_t>(k)];
-    A(k, i) = 1.0;
-    A(k, j) = -1.0;
     const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
     a[k] =
         window.value(amb[static_cast<size_t>(i)])[0] - window.value(amb[static_cast<size_t>(j)])[0];
   }
-  const Eigen::MatrixXd Qa = A * C * A.transpose();
-  std::vector<int> drop(static_cast<size_t>(na));
-  std::iota(drop.begin(), drop.end(), 0);
-  std::sort(drop.begin(), drop.end(),
-            [&](int x, int y) { return el[static_cast<size_t>(x)] < el[static_cast<size_t>(y)]; });
+  const Eigen::MatrixXd Qa = ddAmbiguityCovariance(w_.covariance(amb), pairs);
+  const std::vector<int> drop = lowestElevationFirst(el);
   AmbiguityFix fix;
   try {
-    fix = resolveAmbiguities(a, 0.5 * (Qa + Qa.transpose()), drop, o_.lambda);
+    fix = resolveAmbiguities(a, Qa, drop, o_.lambda);
   } catch (const std::invalid_argument&) {
     return false;
   }

@@ -166,6 +166,30 @@ double bootstrapSuccessRate(const Eigen::VectorXd& D) {
   return p;
 }
 
+Eigen::MatrixXd ddAmbiguityCovariance(const Eigen::MatrixXd& P,
+                                      const std::vector<std::pair<int, int>>& pairs) {
+  const auto na = static_cast<long>(pairs.size());
+  Eigen::MatrixXd Q(na, na);
+  for (long k = 0; k < na; ++k) {
+    const auto [sk, rk] = pairs[static_cast<size_t>(k)];
+    for (long l = 0; l <= k; ++l) {
+      const auto [sl, rl] = pairs[static_cast<size_t>(l)];
+      Q(k, l) = (P(sk, sl) - P(sk, rl)) - (P(rk, sl) - P(rk, rl));
+      Q(l, k) = Q(k, l);
+    }
+  }
+  return Q;
+}
+
+std::vector<int> lowestElevationFirst(const std::vector<double>& elevation) {
+  std::vector<int> order(elevation.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int i, int j) {
+    return elevation[static_cast<size_t>(i)] < elevation[static_cast<size_t>(j)];
+  });
+  return order;
+}
+
 AmbiguityFix resolveAmbiguities(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q,
                                 const std::vector<int>& drop_order, const LambdaOptions& options) {
   std::vector<int> keep(static_cast<size_t>(a.size()));

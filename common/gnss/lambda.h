@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace giocal {
@@ -47,6 +48,15 @@ struct AmbiguityFix {
   double ratio = 0.0;
   double success_rate = 0.0;
 };
+
+/// Covariance of the DD ambiguities N(sat) - N(ref), one per (sat, ref) pair of indices into the
+/// single-difference ambiguities' covariance P (what every estimator hands to LAMBDA). Read from
+/// P's entries, lower triangle computed and mirrored: exactly symmetric.
+Eigen::MatrixXd ddAmbiguityCovariance(const Eigen::MatrixXd& P,
+                                      const std::vector<std::pair<int, int>>& pairs);
+
+/// The partial-AR drop order: indices sorted by rising elevation (the lowest dropped first).
+std::vector<int> lowestElevationFirst(const std::vector<double>& elevation);
 
 /// Full resolution, then partial: drops ambiguities in `drop_order` (first = dropped first, for
 /// example the lowest elevation) until the ratio test passes or fewer than min_fixed remain.

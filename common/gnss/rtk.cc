@@ -3,7 +3,6 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <set>
 
 #include "common/geodesy/wgs84.h"
@@ -248,12 +247,8 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
     A(k, dd[static_cast<size_t>(k)].second) = -1.0;
   }
   const Eigen::VectorXd a = A * x_;
-  const Eigen::MatrixXd Qa = A * P_ * A.transpose();
-  std::vector<int> drop(static_cast<size_t>(na));
-  std::iota(drop.begin(), drop.end(), 0);
-  std::sort(drop.begin(), drop.end(), [&](int i, int j) {
-    return dd_el[static_cast<size_t>(i)] < dd_el[static_cast<size_t>(j)];
-  });
+  const Eigen::MatrixXd Qa = ddAmbiguityCovariance(P_, dd);
+  const std::vector<int> drop = lowestElevationFirst(dd_el);
   AmbiguityFix fix;
   try {
     fix = resolveAmbiguities(a, Qa, drop, options_.lambda);
