@@ -27,11 +27,11 @@ namespace {
 /// Registry indices of the calibration's tangent coordinates, in calib_index order.
 std::array<int, 8> calibrationIndices(const StateRegistry& s) {
   std::array<int, 8> idx{};
-  idx[calib_index::kSv] = s.offset(block::kSv);
-  idx[calib_index::kSw] = s.offset(block::kSw);
+  idx[calib_index::kSv] = s.offset(state::kSv);
+  idx[calib_index::kSw] = s.offset(state::kSw);
   for (int k = 0; k < 3; ++k) {
-    idx[static_cast<size_t>(calib_index::kP + k)] = s.offset(block::kPbm) + k;
-    idx[static_cast<size_t>(calib_index::kTheta + k)] = s.offset(block::kQbm) + k;
+    idx[static_cast<size_t>(calib_index::kP + k)] = s.offset(state::kPbm) + k;
+    idx[static_cast<size_t>(calib_index::kTheta + k)] = s.offset(state::kQbm) + k;
   }
   return idx;
 }
@@ -62,31 +62,31 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
   const Eigen::MatrixXd Pn = init.P_nav;
   Eigen::VectorXd q(4);
   quatToWxyz(init.x.q_n_b, q.data());
-  s_.add(vectorBlock(nav_var::kP), init.x.p_n_b, blk(Pn, 0, 3));
-  s_.add(rotationBlock(nav_var::kQ), q, blk(Pn, 3, 3));
-  s_.add(vectorBlock(nav_var::kV), init.x.v_n_b, blk(Pn, 6, 3));
-  s_.add(vectorBlock(nav_var::kBa), init.x.b_a, blk(Pn, 9, 3));
-  s_.add(vectorBlock(nav_var::kBg), init.x.b_g, blk(Pn, 12, 3));
+  s_.add(vectorBlock(state::kP), init.x.p_n_b, blk(Pn, 0, 3));
+  s_.add(rotationBlock(state::kQ), q, blk(Pn, 3, 3));
+  s_.add(vectorBlock(state::kV), init.x.v_n_b, blk(Pn, 6, 3));
+  s_.add(vectorBlock(state::kBa), init.x.b_a, blk(Pn, 9, 3));
+  s_.add(vectorBlock(state::kBg), init.x.b_g, blk(Pn, 12, 3));
   s_.covariance().topLeftCorner(15, 15) = Pn;
 
   const CalibrationPrior& prior = dataset.initial_calibration;
   const Eigen::Matrix<double, 8, 8> Pc = priorCalibrationCovariance(prior);
   Eigen::VectorXd qbm(4);
   quatToWxyz(prior.mean.q_b_m, qbm.data());
-  s_.add(vectorBlock(block::kSv, 1), Eigen::VectorXd::Constant(1, prior.mean.s_v), blk(Pc, 0, 1));
-  s_.add(vectorBlock(block::kSw, 1), Eigen::VectorXd::Constant(1, prior.mean.s_w), blk(Pc, 1, 1));
-  s_.add(vectorBlock(block::kPbm), prior.mean.p_b_m, blk(Pc, 2, 3));
-  s_.add(rotationBlock(block::kQbm), qbm, blk(Pc, 5, 3));
+  s_.add(vectorBlock(state::kSv, 1), Eigen::VectorXd::Constant(1, prior.mean.s_v), blk(Pc, 0, 1));
+  s_.add(vectorBlock(state::kSw, 1), Eigen::VectorXd::Constant(1, prior.mean.s_w), blk(Pc, 1, 1));
+  s_.add(vectorBlock(state::kPbm), prior.mean.p_b_m, blk(Pc, 2, 3));
+  s_.add(rotationBlock(state::kQbm), qbm, blk(Pc, 5, 3));
   s_.covariance().block(15, 15, 8, 8) = Pc;
   s_.covariance().block(0, 15, 15, 8) = init.P_nav_calib;
   s_.covariance().block(15, 0, 8, 15) = init.P_nav_calib.transpose();
 
   const double sd_lever = options.estimate_p_b_g ? options.p_b_g_sigma : 0.0;
-  s_.add(vectorBlock(ekf_var::kPbg), dataset.p_b_g,
+  s_.add(vectorBlock(state::kPbg), dataset.p_b_g,
          Eigen::Matrix3d::Identity() * sd_lever * sd_lever);
   if (options.estimate_odometer_delay) {  // about zero, after dataset.yaml's time_offsets
     const double sd = options.odometer_delay_sigma;
-    s_.add(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1),
+    s_.add(vectorBlock(state::kTdOdo, 1), Eigen::VectorXd::Zero(1),
            Eigen::MatrixXd::Constant(1, 1, sd * sd));
   }
 }
@@ -117,7 +117,7 @@ std::vector<int> CalibrationFilter::heldIndices() const {
   if (options_.hold_calibration) {
     const std::array<int, 8> idx = calibrationIndices(s_);
     std::vector<int> held(idx.begin(), idx.end());
-    if (s_.has(block::kTdOdo)) held.push_back(s_.offset(block::kTdOdo));
+    if (s_.has(state::kTdOdo)) held.push_back(s_.offset(state::kTdOdo));
     return held;
   }
   // States the run keeps at the prior (p_b_m.z in planar motion, a speed-only odometer's s_w).
@@ -131,15 +131,15 @@ void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vect
                                  const Eigen::Quaterniond& q_n_b) {
   NavState x = navState(s_);
   const Mat3 dR = q_n_b.toRotationMatrix() * x.q_n_b.toRotationMatrix().transpose();
-  const auto rotate = [&](const char* name) {
-    const Quat q = quatFromWxyz(s_.value(name).data());
-    quatToWxyz(Quat(dR * q.toRotationMatrix()).normalized(), s_.value(name).data());
+  const auto rotate = [&](const StateKey& key) {
+    const Quat q = quatFromWxyz(s_.value(key).data());
+    quatToWxyz(Quat(dR * q.toRotationMatrix()).normalized(), s_.value(key).data());
   };
-  if (s_.has(ekf_var::kOdoP)) {
-    s_.value(ekf_var::kOdoP) = p_n_b + dR * (s_.value(ekf_var::kOdoP) - x.p_n_b);
-    rotate(ekf_var::kOdoQ);
+  if (s_.has(kOdoP)) {
+    s_.value(kOdoP) = p_n_b + dR * (s_.value(kOdoP) - x.p_n_b);
+    rotate(kOdoQ);
   }
-  if (s_.has(ekf_var::kHeadingClone)) rotate(ekf_var::kHeadingClone);
+  if (s_.has(kHeadingClone)) rotate(kHeadingClone);
   x.p_n_b = p_n_b;
   x.v_n_b = v_n_b;
   x.q_n_b = q_n_b;
@@ -148,12 +148,12 @@ void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vect
 }
 
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,
-                                       const std::vector<std::string>& names, double chi2_gate,
+                                       const std::vector<StateKey>& keys, double chi2_gate,
                                        double gyro_variance, int iterations) {
   const auto rowsAt = [&](const StateRegistry& at) {
-    MeasurementRows rows = linearize(model, at.bind(names), at.dim());
+    MeasurementRows rows = linearize(model, at.bind(keys), at.dim());
     if (gyro_variance > 0.0) {
-      const Eigen::MatrixXd H_bg = rows.H.middleCols(at.offset(nav_var::kBg), 3);
+      const Eigen::MatrixXd H_bg = rows.H.middleCols(at.offset(state::kBg), 3);
       rows.R += gyro_variance * H_bg * H_bg.transpose();
     }
     return rows;
@@ -210,7 +210,7 @@ CalibrationFilter::Gyro CalibrationFilter::gyroMean(double t, double half_window
 }
 
 void CalibrationFilter::feedMotion(double t) {
-  const Eigen::Vector3d b_g = s_.value(nav_var::kBg);
+  const Eigen::Vector3d b_g = s_.value(state::kBg);
   auto it = std::upper_bound(imu_.begin(), imu_.end(), motion_fed_t_,
                              [](double v, const ImuSample& s) { return v < s.t; });
   for (; it != imu_.end() && it->t <= t; ++it) motion_.addImu(it->t, it->gyro - b_g);
@@ -248,8 +248,8 @@ double CalibrationFilter::propagateTo(double t) {
   pending_.reset();
   const double dt = t - t_;
   const double q = options_.hold_calibration ? 0.0 : dataset_.odom_noise.scale_random_walk;
-  for (const char* name : {block::kSv.c_str(), block::kSw.c_str()}) {
-    const int i = s_.offset(name);
+  for (const StateKey& key : {state::kSv, state::kSw}) {
+    const int i = s_.offset(key);
     s_.covariance()(i, i) += q * q * dt;
   }
   t_ = t;
@@ -257,20 +257,20 @@ double CalibrationFilter::propagateTo(double t) {
 }
 
 void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
-  for (const char* n : {ekf_var::kOdoP, ekf_var::kOdoQ}) {
+  for (const StateKey& n : {kOdoP, kOdoQ}) {
     if (s_.has(n)) s_.remove(n);
   }
-  s_.clone(nav_var::kP, ekf_var::kOdoP);
-  s_.clone(nav_var::kQ, ekf_var::kOdoQ);
+  s_.clone(state::kP, kOdoP);
+  s_.clone(state::kQ, kOdoQ);
   odo_pre_ = std::make_unique<OdometerPreintegration>(
-      odometerPreintegrationNoise(dataset_.odom_noise, options_.models), s_.value(block::kSv)[0],
-      s_.value(block::kSw)[0]);
+      odometerPreintegrationNoise(dataset_.odom_noise, options_.models), s_.value(state::kSv)[0],
+      s_.value(state::kSw)[0]);
   last_odo_ = sample;
   interval_moved_ = false;
   if (options_.estimate_odometer_delay) {
-    odo_rates_.v_n_i = s_.value(nav_var::kV);
+    odo_rates_.v_n_i = s_.value(state::kV);
     odo_rates_.w_b_i =
-        poseRate(imu_, sample.t, s_.value(nav_var::kBg), dataset_.imu_noise.gyro_noise_density);
+        poseRate(imu_, sample.t, s_.value(state::kBg), dataset_.imu_noise.gyro_noise_density);
   }
 }
 
@@ -297,15 +297,15 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     }
     last_odo_ = sample;
     if (interval_done) {
-      std::vector<std::string> names{ekf_var::kOdoP, ekf_var::kOdoQ, nav_var::kP, nav_var::kQ,
-                                     block::kSv,     block::kSw,     block::kPbm, block::kQbm};
+      std::vector<StateKey> keys{kOdoP,      kOdoQ,      state::kP,   state::kQ,
+                                 state::kSv, state::kSw, state::kPbm, state::kQbm};
       std::optional<PoseRates> rates;  // with the odometer's delay as a state
       if (options_.estimate_odometer_delay) {
-        odo_rates_.v_n_j = s_.value(nav_var::kV);
+        odo_rates_.v_n_j = s_.value(state::kV);
         odo_rates_.w_b_j =
-            poseRate(imu_, sample.t, s_.value(nav_var::kBg), dataset_.imu_noise.gyro_noise_density);
+            poseRate(imu_, sample.t, s_.value(state::kBg), dataset_.imu_noise.gyro_noise_density);
         rates = odo_rates_;
-        names.push_back(block::kTdOdo);
+        keys.push_back(state::kTdOdo);
       }
       std::shared_ptr<const MeasurementModel> model =
           planar(std::make_shared<OdometerPreintegrationModel>(
@@ -317,7 +317,7 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
                       odometer_rejected_in_row_ >= options_.max_odometer_rejections;
       if (step.reopened) reopenCalibration();
       const UpdateResult r =
-          update(*model, names, chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
+          update(*model, keys, chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
                  options_.odometer_iterations);
       step.rejected = !r.accepted;
       odometer_rejected_in_row_ =
@@ -328,22 +328,22 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
   const Gyro gyro = gyroMean(sample.t, 0.5 * options_.models.motion.window_s);
 
   if (still) {
-    update(ZuptModel(options_.models.zupt_sigma), {nav_var::kV},
+    update(ZuptModel(options_.models.zupt_sigma), {state::kV},
            chi2Quantile(options_.chi2_probability, 3));
-    if (!s_.has(ekf_var::kHeadingClone)) {
-      s_.clone(nav_var::kQ, ekf_var::kHeadingClone);
+    if (!s_.has(kHeadingClone)) {
+      s_.clone(state::kQ, kHeadingClone);
     } else {
-      update(HeadingChangeModel(options_.heading_sigma_deg * kDegToRad),
-             {ekf_var::kHeadingClone, nav_var::kQ}, chi2Quantile(options_.chi2_probability, 1));
+      update(HeadingChangeModel(options_.heading_sigma_deg * kDegToRad), {kHeadingClone, state::kQ},
+             chi2Quantile(options_.chi2_probability, 1));
     }
-  } else if (s_.has(ekf_var::kHeadingClone)) {
-    s_.remove(ekf_var::kHeadingClone);
+  } else if (s_.has(kHeadingClone)) {
+    s_.remove(kHeadingClone);
   }
   if (nhc) {
     // The mean rate over the window: a single noisy sample in the lever-arm term would bias the
     // extrinsic (errors in variables).
     update(*planar(std::make_shared<NhcModel>(gyro.rate, options_.models.nhc_sigma)),
-           {nav_var::kV, nav_var::kQ, nav_var::kBg, block::kPbm, block::kQbm},
+           {state::kV, state::kQ, state::kBg, state::kPbm, state::kQbm},
            chi2Quantile(options_.chi2_probability, 2), gyro.variance);
   }
   return step;
@@ -358,16 +358,16 @@ NavState CalibrationFilter::nav() const {
 CalibrationEstimate CalibrationFilter::calibration() const {
   CalibrationEstimate e;
   e.t = t_;
-  e.calib.s_v = s_.value(block::kSv)[0];
-  e.calib.s_w = s_.value(block::kSw)[0];
-  e.calib.p_b_m = s_.value(block::kPbm);
-  e.calib.q_b_m = quatFromWxyz(s_.value(block::kQbm).data());
+  e.calib.s_v = s_.value(state::kSv)[0];
+  e.calib.s_w = s_.value(state::kSw)[0];
+  e.calib.p_b_m = s_.value(state::kPbm);
+  e.calib.q_b_m = quatFromWxyz(s_.value(state::kQbm).data());
   const std::array<int, 8> idx = calibrationIndices(s_);
   for (int a = 0; a < 8; ++a)
     for (int b = 0; b < 8; ++b) e.cov(a, b) = s_.covariance()(idx[a], idx[b]);
   if (options_.estimate_odometer_delay) {
-    const int d = s_.offset(block::kTdOdo);
-    e.odometer_delay_s = s_.value(block::kTdOdo)[0];
+    const int d = s_.offset(state::kTdOdo);
+    e.odometer_delay_s = s_.value(state::kTdOdo)[0];
     e.odometer_delay_sd_s = std::sqrt(s_.covariance()(d, d));
   }
   return e;
@@ -387,7 +387,7 @@ TruthSample CalibrationFilter::trajectorySample(double t) {
 bool CalibrationFilter::updatePosition(const PositionFix& fix) {
   propagateTo(fix.t);
   const PositionModel model = positionModelOf(frame(), fix, options_.lc);
-  return update(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg},
+  return update(model, {state::kP, state::kQ, state::kPbg},
                 chi2Quantile(options_.chi2_probability, 3))
       .accepted;
 }

@@ -14,23 +14,20 @@
 #include "common/gnss/pos_reader.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/imu/imu_sample.h"
+#include "common/math/kalman_update.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odom_sample.h"
 #include "common/odometer/odometer_preintegration.h"
-#include "common/math/kalman_update.h"
 #include "ekf/state_registry.h"
 
 namespace giocal {
 
-/// Registry names of the variables besides the navigation ones (ekf/imu_propagation.h).
-namespace ekf_var {
-inline const char* const kPbg = "p_b_g";
-inline const char* const kClockDrift = "cdt_dot";
-inline const char* const kHeadingClone = "q_n_b@still";  // attitude when the robot stopped
-inline const char* const kOdoP = "p_n_b@odo";  // pose at the start of the odometer interval
-inline const char* const kOdoQ = "q_n_b@odo";
-}  // namespace ekf_var
+/// The filter's stochastic clones: the attitude when the robot stopped, the pose at the start of
+/// the odometer interval.
+inline const StateKey kHeadingClone = at(state::kQ, Copy::kStill);
+inline const StateKey kOdoP = at(state::kP, Copy::kOdo);
+inline const StateKey kOdoQ = at(state::kQ, Copy::kOdo);
 
 /// What one odometer sample did to the filter.
 struct OdometerStep {
@@ -63,12 +60,12 @@ class CalibrationFilter {
   /// when the motion detectors fire.
   OdometerStep updateOdometer(const OdomSample& sample);
 
-  /// One gated Kalman update from a shared model whose blocks are the registry variables `names`;
+  /// One gated Kalman update from a shared model whose blocks are the registry variables `keys`;
   /// consider states (p_b_m.z when held) are not corrected. Models that take a raw gyro sample
   /// pass its per-axis variance: the sample enters as (gyro - b_g), so its noise reaches the
   /// residual through the b_g columns of H and is added to R as gyro_variance H_bg H_bg^T.
   /// iterations > 1: iterated EKF, relinearized at each new estimate.
-  UpdateResult update(const MeasurementModel& model, const std::vector<std::string>& names,
+  UpdateResult update(const MeasurementModel& model, const std::vector<StateKey>& keys,
                       double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
 
   /// One Kalman update from rows already linearized at the current state (a caller that screened
@@ -99,7 +96,7 @@ class CalibrationFilter {
   /// The navigation state predicted to t >= time() (mean only) as a truth.csv row: IMU origin,
   /// ENU velocity and attitude.
   TruthSample trajectorySample(double t);
-  bool standingStill() const { return s_.has(ekf_var::kHeadingClone); }
+  bool standingStill() const { return s_.has(kHeadingClone); }
 
  private:
   /// The filter was too sure of a wrong calibration (the odometer gated out again and again):

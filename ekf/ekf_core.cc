@@ -11,7 +11,7 @@ namespace {
 
 bool finiteState(const StateRegistry& s) {
   if (!s.covariance().allFinite()) return false;
-  for (const std::string& n : s.names()) {
+  for (const StateKey& n : s.keys()) {
     if (!s.value(n).allFinite()) return false;
   }
   return true;

@@ -14,21 +14,13 @@
 
 namespace giocal {
 
-std::string ambiguityName(const SatId& sat, char band) {
-  std::string name = "N:";
-  name += sat.str();
-  name += ':';
-  name += band;
-  return name;
-}
-
 namespace {
 
-std::vector<std::string> modelNames(const MeasurementModel& m,
-                                    const std::vector<std::string>& first) {
-  std::vector<std::string> names = first;
-  for (size_t k = first.size(); k < m.blocks().size(); ++k) names.push_back(m.blocks()[k].name);
-  return names;
+/// `first` for the model's first blocks, then the model's own keys (its ambiguities).
+std::vector<StateKey> modelKeys(const MeasurementModel& m, const std::vector<StateKey>& first) {
+  std::vector<StateKey> keys = first;
+  for (size_t k = first.size(); k < m.blocks().size(); ++k) keys.push_back(m.blocks()[k].key);
+  return keys;
 }
 
 }  // namespace
@@ -41,13 +33,13 @@ GnssUpdate::GnssUpdate(const BroadcastOrbits& orbits, const Eigen::Vector3d& bas
       rover_check_(options.code_outliers),
       base_check_(options.code_outliers) {}
 
-void GnssUpdate::resetAmbiguity(StateRegistry& s, const std::string& name, double value,
+void GnssUpdate::resetAmbiguity(StateRegistry& s, const StateKey& key, double value,
                                 double lambda) {
-  if (s.has(name)) s.remove(name);
+  if (s.has(key)) s.remove(key);
   // Start from code: 10 m of uncertainty covers code noise and multipath.
-  s.add(vectorBlock(name, 1), Eigen::VectorXd::Constant(1, value),
+  s.add(vectorBlock(key, 1), Eigen::VectorXd::Constant(1, value),
         Eigen::MatrixXd::Constant(1, 1, std::pow(10.0 / lambda, 2)));
-  ambiguities_.insert(name);
+  ambiguities_.insert(key);
 }
 
 GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
@@ -63,24 +55,24 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
   const std::set<CodeOutlierCheck::Key> bad_base = base_check_.check(base);
 
   const NavState x = f.nav();
-  const Eigen::Vector3d ant_e = f.frame().ecefFromEnu(x.p_n_b + x.q_n_b * s.value(ekf_var::kPbg));
+  const Eigen::Vector3d ant_e = f.frame().ecefFromEnu(x.p_n_b + x.q_n_b * s.value(state::kPbg));
   const DdEpoch ep = builder_.build(rover, base, ant_e);
 
   // SD ambiguities: random walk, restart after slips, add new, drop unseen.
   const double qa = options_.ambiguity_noise * options_.ambiguity_noise * dt;
-  for (const std::string& n : ambiguities_) s.covariance()(s.offset(n), s.offset(n)) += qa;
-  std::set<std::string> seen;
-  std::map<std::string, const SdAmbiguity*> by_name;
+  for (const StateKey& n : ambiguities_) s.covariance()(s.offset(n), s.offset(n)) += qa;
+  std::set<StateKey> seen;
+  std::map<StateKey, const SdAmbiguity*> by_key;
   for (const SdAmbiguity& a : ep.ambiguities) {
-    const std::string n = ambiguityName(a.sat, a.band);
+    const StateKey n = ambiguityKey(a.sat, a.band);
     seen.insert(n);
-    by_name[n] = &a;
+    by_key[n] = &a;
     if (a.slipped || !s.has(n)) {
       rep.ambiguity_resets += a.slipped && s.has(n);
       resetAmbiguity(s, n, a.code_value, a.lambda);
     }
   }
-  for (const std::string& n : std::vector<std::string>(ambiguities_.begin(), ambiguities_.end())) {
+  for (const StateKey& n : std::vector<StateKey>(ambiguities_.begin(), ambiguities_.end())) {
     if (!seen.count(n)) {
       s.remove(n);
       ambiguities_.erase(n);
@@ -104,11 +96,11 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
 
   // Stage 2: the worst row beyond the innovation gate goes, until none is left; a phase row's
   // ambiguity restarts from code (most likely an undetected slip).
-  const std::vector<std::string> nav_names{nav_var::kP, nav_var::kQ, ekf_var::kPbg};
+  const std::vector<StateKey> nav_keys{state::kP, state::kQ, state::kPbg};
   MeasurementRows lin;  // the rows that passed, linearized at the state the update starts from
   while (!rows.empty()) {
     const DdGnssModel model(f.frame(), ep.geometry, rows, ep.undiff_variance);
-    lin = linearize(model, s.bind(modelNames(model, nav_names)), s.dim());
+    lin = linearize(model, s.bind(modelKeys(model, nav_keys)), s.dim());
     const Eigen::VectorXd z = normalizedInnovations(s.covariance(), lin);
     // Divergence: the code rows as a whole far outside their predicted spread.
     std::vector<double> code_z;
@@ -126,8 +118,8 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     rows.erase(rows.begin() + worst);
     ++rep.rejected_rows;
     if (bad.phase) {
-      const std::string n = ambiguityName(bad.sat, bad.band);
-      resetAmbiguity(s, n, by_name.at(n)->code_value, bad.lambda);
+      const StateKey n = ambiguityKey(bad.sat, bad.band);
+      resetAmbiguity(s, n, by_key.at(n)->code_value, bad.lambda);
       ++rep.ambiguity_resets;
     }
   }
@@ -155,28 +147,28 @@ void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
   if (obs.size() < 4) return;
   StateRegistry& s = f.state();
   const CalibrationFilter::Gyro gyro = f.gyroAt(rover.t);
-  const std::vector<std::string> names{nav_var::kV, nav_var::kQ, nav_var::kBg, ekf_var::kPbg,
-                                       ekf_var::kClockDrift};
-  if (!s.has(ekf_var::kClockDrift) || dt > 30.0) {
+  const std::vector<StateKey> keys{state::kV, state::kQ, state::kBg, state::kPbg,
+                                   state::kClockDrift};
+  if (!s.has(state::kClockDrift) || dt > 30.0) {
     // Start the clock drift from the median residual at zero drift.
-    if (s.has(ekf_var::kClockDrift)) s.remove(ekf_var::kClockDrift);
-    s.add(vectorBlock(ekf_var::kClockDrift, 1), Eigen::VectorXd::Zero(1),
+    if (s.has(state::kClockDrift)) s.remove(state::kClockDrift);
+    s.add(vectorBlock(state::kClockDrift, 1), Eigen::VectorXd::Zero(1),
           Eigen::MatrixXd::Constant(1, 1, 1.0));
     const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
-    const MeasurementRows lin = linearize(m, s.bind(names), s.dim());
-    s.value(ekf_var::kClockDrift)[0] = -median(
+    const MeasurementRows lin = linearize(m, s.bind(keys), s.dim());
+    s.value(state::kClockDrift)[0] = -median(
         std::vector<double>(lin.residual.data(), lin.residual.data() + lin.residual.size()));
   } else {
-    const int i = s.offset(ekf_var::kClockDrift);
+    const int i = s.offset(state::kClockDrift);
     s.covariance()(i, i) += options_.clock_drift_noise * options_.clock_drift_noise * dt;
   }
   while (obs.size() >= 4) {
     const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
     const Eigen::VectorXd z =
-        normalizedInnovations(s.covariance(), linearize(m, s.bind(names), s.dim()));
+        normalizedInnovations(s.covariance(), linearize(m, s.bind(keys), s.dim()));
     long worst = 0;
     if (z.maxCoeff(&worst) <= options_.innovation_gate) {
-      f.update(m, names, INFINITY, gyro.variance);
+      f.update(m, keys, INFINITY, gyro.variance);
       return;
     }
     obs.erase(obs.begin() + worst);
@@ -196,7 +188,7 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   std::vector<double> el;
   for (long k = 0; k < na; ++k) {
     const DdObservation& o = phase_rows[static_cast<size_t>(k)];
-    const std::string ns = ambiguityName(o.sat, o.band), nr = ambiguityName(o.ref, o.band);
+    const StateKey ns = ambiguityKey(o.sat, o.band), nr = ambiguityKey(o.ref, o.band);
     pairs.push_back({s.offset(ns), s.offset(nr)});
     a[k] = s.value(ns)[0] - s.value(nr)[0];
     el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
@@ -219,7 +211,7 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
     const int i = fix.indices[k];
     if (Qa(i, i) < held_variance) continue;
     const DdObservation& o = phase_rows[static_cast<size_t>(i)];
-    fixes.push_back({ambiguityName(o.sat, o.band), ambiguityName(o.ref, o.band),
+    fixes.push_back({ambiguityKey(o.sat, o.band), ambiguityKey(o.ref, o.band),
                      fix.values[static_cast<long>(k)]});
   }
   rep.fixed_ambiguities = static_cast<int>(fix.indices.size());
@@ -230,12 +222,12 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   // Apply the fixes, then keep them only if the fixed solution fits every DD phase row.
   const StateRegistry saved = s;
   const AmbiguityFixModel constraint(fixes, options_.fix_sigma_cycles);
-  std::vector<std::string> names;
-  for (const StateBlock& b : constraint.blocks()) names.push_back(b.name);
-  f.update(constraint, names, INFINITY);
+  std::vector<StateKey> keys;
+  for (const StateBlock& b : constraint.blocks()) keys.push_back(b.key);
+  f.update(constraint, keys, INFINITY);
   const DdGnssModel model(f.frame(), ep.geometry, phase_rows, ep.undiff_variance);
-  const MeasurementRows lin = linearize(
-      model, s.bind(modelNames(model, {nav_var::kP, nav_var::kQ, ekf_var::kPbg})), s.dim());
+  const MeasurementRows lin =
+      linearize(model, s.bind(modelKeys(model, {state::kP, state::kQ, state::kPbg})), s.dim());
   const Eigen::VectorXd sd = lin.R.diagonal().cwiseSqrt();
   if ((lin.residual.cwiseAbs().array() / sd.array()).maxCoeff() > options_.max_fix_residual) {
     s = saved;

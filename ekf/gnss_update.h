@@ -5,7 +5,6 @@
 #pragma once
 
 #include <set>
-#include <string>
 
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/code_outlier_check.h"
@@ -31,7 +30,7 @@ class GnssUpdate {
   GnssEpochReport process(CalibrationFilter& filter, const ObsEpoch& rover, const ObsEpoch& base);
 
  private:
-  void resetAmbiguity(StateRegistry& s, const std::string& name, double value, double lambda);
+  void resetAmbiguity(StateRegistry& s, const StateKey& key, double value, double lambda);
   void updateDoppler(CalibrationFilter& f, const ObsEpoch& rover, const Eigen::Vector3d& ant_e,
                      double dt, GnssEpochReport& rep);
   void resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
@@ -41,11 +40,8 @@ class GnssUpdate {
   CalibrationOptions options_;
   DdEpochBuilder builder_;
   CodeOutlierCheck rover_check_, base_check_;
-  std::set<std::string> ambiguities_;  // registry names of the SD ambiguity states
+  std::set<StateKey> ambiguities_;  // the SD ambiguity states in the registry
   double t_last_ = NAN;
 };
-
-/// Registry name of the SD ambiguity of (sat, band), the block name DdGnssModel uses.
-std::string ambiguityName(const SatId& sat, char band);
 
 }  // namespace giocal

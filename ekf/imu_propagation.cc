@@ -9,20 +9,20 @@ namespace giocal {
 
 NavState navState(const StateRegistry& s) {
   NavState x;
-  x.p_n_b = s.value(nav_var::kP);
-  x.q_n_b = quatFromWxyz(s.value(nav_var::kQ).data());
-  x.v_n_b = s.value(nav_var::kV);
-  x.b_a = s.value(nav_var::kBa);
-  x.b_g = s.value(nav_var::kBg);
+  x.p_n_b = s.value(state::kP);
+  x.q_n_b = quatFromWxyz(s.value(state::kQ).data());
+  x.v_n_b = s.value(state::kV);
+  x.b_a = s.value(state::kBa);
+  x.b_g = s.value(state::kBg);
   return x;
 }
 
 void setNavState(StateRegistry& s, const NavState& x) {
-  s.value(nav_var::kP) = x.p_n_b;
-  quatToWxyz(x.q_n_b, s.value(nav_var::kQ).data());
-  s.value(nav_var::kV) = x.v_n_b;
-  s.value(nav_var::kBa) = x.b_a;
-  s.value(nav_var::kBg) = x.b_g;
+  s.value(state::kP) = x.p_n_b;
+  quatToWxyz(x.q_n_b, s.value(state::kQ).data());
+  s.value(state::kV) = x.v_n_b;
+  s.value(state::kBa) = x.b_a;
+  s.value(state::kBg) = x.b_g;
 }
 
 void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
@@ -40,8 +40,8 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
   // Only the navigation rows of Phi differ from identity: P' = Phi P Phi^T touches the navigation
   // rows and columns only, at O(15 n) instead of O(n^3).
   std::vector<int> idx;  // error-state index of each navigation component, in F's order
-  for (const char* name : {nav_var::kP, nav_var::kQ, nav_var::kV, nav_var::kBa, nav_var::kBg}) {
-    for (int k = 0; k < 3; ++k) idx.push_back(s.offset(name) + k);
+  for (const StateKey& key : {state::kP, state::kQ, state::kV, state::kBa, state::kBg}) {
+    for (int k = 0; k < 3; ++k) idx.push_back(s.offset(key) + k);
   }
   Eigen::MatrixXd& P = s.covariance();
   const int n = s.dim();

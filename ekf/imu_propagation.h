@@ -8,15 +8,6 @@
 
 namespace giocal {
 
-/// Names of the navigation variables the registry must hold.
-namespace nav_var {
-inline const char* const kP = "p_n_b";
-inline const char* const kQ = "q_n_b";
-inline const char* const kV = "v_n_b";
-inline const char* const kBa = "b_a";
-inline const char* const kBg = "b_g";
-}  // namespace nav_var
-
 NavState navState(const StateRegistry& s);
 void setNavState(StateRegistry& s, const NavState& x);
 

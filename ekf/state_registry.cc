@@ -9,22 +9,25 @@ namespace giocal {
 
 void StateRegistry::add(const StateBlock& block, const Eigen::VectorXd& value,
                         const Eigen::MatrixXd& covariance) {
-  if (has(block.name)) throw std::invalid_argument("state variable '" + block.name + "' exists");
+  if (has(block.key)) {
+    throw std::invalid_argument("state variable '" + block.key.str() + "' exists");
+  }
   if (value.size() != block.ambientSize() || covariance.rows() != block.tangentSize() ||
       covariance.cols() != block.tangentSize()) {
-    throw std::invalid_argument("state variable '" + block.name + "': value or covariance size");
+    throw std::invalid_argument("state variable '" + block.key.str() +
+                                "': value or covariance size");
   }
   const int n = dim(), m = block.tangentSize();
   P_.conservativeResize(n + m, n + m);
   P_.bottomRows(m).setZero();
   P_.rightCols(m).setZero();
   P_.bottomRightCorner(m, m) = covariance;
-  vars_[block.name] = {block, value, n};
-  order_.push_back(block.name);
+  vars_[block.key] = {block, value, n};
+  order_.push_back(block.key);
 }
 
-void StateRegistry::remove(const std::string& name) {
-  const int off = offset(name), m = block(name).tangentSize(), n = dim();
+void StateRegistry::remove(const StateKey& key) {
+  const int off = offset(key), m = block(key).tangentSize(), n = dim();
   Eigen::MatrixXd P(n - m, n - m);
   const int tail = n - off - m;
   P.topLeftCorner(off, off) = P_.topLeftCorner(off, off);
@@ -32,58 +35,56 @@ void StateRegistry::remove(const std::string& name) {
   P.bottomLeftCorner(tail, off) = P_.bottomLeftCorner(tail, off);
   P.bottomRightCorner(tail, tail) = P_.bottomRightCorner(tail, tail);
   P_ = P;
-  vars_.erase(name);
-  order_.erase(std::find(order_.begin(), order_.end(), name));
-  for (auto& [n2, v] : vars_) {
+  vars_.erase(key);
+  order_.erase(std::find(order_.begin(), order_.end(), key));
+  for (auto& [k, v] : vars_) {
     if (v.offset > off) v.offset -= m;
   }
 }
 
-void StateRegistry::clone(const std::string& name, const std::string& copy) {
-  StateBlock b = block(name);
-  const int src = offset(name), m = b.tangentSize();
-  b.name = copy;
-  add(b, value(name), marginal(name));
+void StateRegistry::clone(const StateKey& key, const StateKey& copy) {
+  StateBlock b = block(key);
+  const int src = offset(key), m = b.tangentSize();
+  b.key = copy;
+  add(b, value(key), marginal(key));
   const int dst = offset(copy);
   P_.block(dst, 0, m, dim()) = P_.block(src, 0, m, dim());
   P_.block(0, dst, dim(), m) = P_.block(0, src, dim(), m);
   P_.block(dst, dst, m, m) = P_.block(src, src, m, m);
 }
 
-int StateRegistry::offset(const std::string& name) const {
-  const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+int StateRegistry::offset(const StateKey& key) const {
+  const auto it = vars_.find(key);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
   return it->second.offset;
 }
 
-const StateBlock& StateRegistry::block(const std::string& name) const {
-  const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+const StateBlock& StateRegistry::block(const StateKey& key) const {
+  const auto it = vars_.find(key);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
   return it->second.block;
 }
 
-const Eigen::VectorXd& StateRegistry::value(const std::string& name) const {
-  const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+const Eigen::VectorXd& StateRegistry::value(const StateKey& key) const {
+  const auto it = vars_.find(key);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
   return it->second.value;
 }
 
-Eigen::VectorXd& StateRegistry::value(const std::string& name) {
-  const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + name + "'");
+Eigen::VectorXd& StateRegistry::value(const StateKey& key) {
+  const auto it = vars_.find(key);
+  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
   return it->second.value;
 }
 
-std::vector<std::string> StateRegistry::names() const { return order_; }
-
-Eigen::MatrixXd StateRegistry::marginal(const std::string& name) const {
-  const int m = block(name).tangentSize(), off = offset(name);
+Eigen::MatrixXd StateRegistry::marginal(const StateKey& key) const {
+  const int m = block(key).tangentSize(), off = offset(key);
   return P_.block(off, off, m, m);
 }
 
 void StateRegistry::correct(const Eigen::VectorXd& dx) {
   if (dx.size() != dim()) throw std::invalid_argument("correction size differs from the state");
-  for (auto& [name, v] : vars_) {
+  for (auto& [key, v] : vars_) {
     if (v.block.kind == BlockKind::kRotation) {
       const Quat q = boxPlus(quatFromWxyz(v.value.data()), dx.segment<3>(v.offset));
       quatToWxyz(q, v.value.data());
@@ -101,8 +102,8 @@ void StateRegistry::setValues(const StateRegistry& other) {
 
 Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
   Eigen::VectorXd dx(dim());
-  for (const auto& [name, v] : vars_) {
-    const Eigen::VectorXd& b = base.value(name);
+  for (const auto& [key, v] : vars_) {
+    const Eigen::VectorXd& b = base.value(key);
     if (v.block.kind == BlockKind::kRotation) {
       dx.segment<3>(v.offset) = boxMinus(quatFromWxyz(v.value.data()), quatFromWxyz(b.data()));
     } else {
@@ -112,11 +113,12 @@ Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
   return dx;
 }
 
-std::vector<BlockBinding> StateRegistry::bind(const std::vector<std::string>& names) const {
+std::vector<BlockBinding> StateRegistry::bind(const std::vector<StateKey>& keys) const {
   std::vector<BlockBinding> out;
-  for (const std::string& n : names) {
-    const auto it = vars_.find(n);
-    if (it == vars_.end()) throw std::out_of_range("no state variable '" + n + "' to bind");
+  out.reserve(keys.size());
+  for (const StateKey& k : keys) {
+    const auto it = vars_.find(k);
+    if (it == vars_.end()) throw std::out_of_range("no state variable '" + k.str() + "' to bind");
     out.push_back({it->second.value.data(), it->second.offset});
   }
   return out;

@@ -19,7 +19,7 @@
 #include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
 #include "common/odometer/odometer_preintegration.h"
-#include "fgo/variable_names.h"
+#include "fgo/factor_tag.h"
 
 namespace giocal {
 
@@ -27,10 +27,10 @@ namespace {
 constexpr double kScaleRandomWalkFloor = 1e-6;  // [1/sqrt(s)]
 }  // namespace
 
-using fgo_var::kPbg;
-using fgo_var::kPbm;
-using fgo_var::kQbm;
 using fgo_var::tagged;
+using state::kPbg;
+using state::kPbm;
+using state::kQbm;
 
 FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const BroadcastOrbits& orbits,
                                  const CalibrationOptions& o, const FgoOptions& fo,
@@ -63,14 +63,14 @@ FgoEpoch FactorGraphCore::newEpoch(double t) {
   FgoEpoch e;
   e.t = t;
   e.k = next_k_++;
-  e.p = tagged("p_n_b", e.k);
-  e.q = tagged("q_n_b", e.k);
-  e.v = tagged("v_n_b", e.k);
-  e.ba = tagged("b_a", e.k);
-  e.bg = tagged("b_g", e.k);
-  e.sv = tagged("s_v", e.k);
-  e.sw = tagged("s_w", e.k);
-  e.cd = tagged("cdt_dot", e.k);
+  e.p = atEpoch(state::kP, e.k);
+  e.q = atEpoch(state::kQ, e.k);
+  e.v = atEpoch(state::kV, e.k);
+  e.ba = atEpoch(state::kBa, e.k);
+  e.bg = atEpoch(state::kBg, e.k);
+  e.sv = atEpoch(state::kSv, e.k);
+  e.sw = atEpoch(state::kSw, e.k);
+  e.cd = atEpoch(state::kClockDrift, e.k);
   return e;
 }
 
@@ -134,14 +134,14 @@ void FactorGraphCore::start(const InitialState& init) {
                                  vectorBlock(e.ba),    vectorBlock(e.bg),  vectorBlock(e.sv, 1),
                                  vectorBlock(e.sw, 1), vectorBlock(kPbm),  rotationBlock(kQbm)};
   Eigen::VectorXd mean(0);
-  std::vector<std::string> names;
+  std::vector<StateKey> keys;
   for (const StateBlock& b : blocks) {
-    const Eigen::VectorXd& x = w_.value(b.name);
+    const Eigen::VectorXd& x = w_.value(b.key);
     mean.conservativeResize(mean.size() + x.size());
     mean.tail(x.size()) = x;
-    names.push_back(b.name);
+    keys.push_back(b.key);
   }
-  w_.addFactor({std::make_shared<PriorModel>(blocks, mean, P), names, 0.0, "initial_prior"});
+  w_.addFactor({std::make_shared<PriorModel>(blocks, mean, P), keys, 0.0, "initial_prior"});
   w_.addFactor(
       {std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.cd, 1)},
                                     Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Constant(1, 1, 1e6)),
@@ -159,12 +159,12 @@ void FactorGraphCore::start(const InitialState& init) {
     w_.setConstant(kPbg, true);
   }
   if (o_.estimate_odometer_delay) {  // about zero, after dataset.yaml's time_offsets
-    w_.addVariable(vectorBlock(block::kTdOdo, 1), Eigen::VectorXd::Zero(1));
+    w_.addVariable(vectorBlock(state::kTdOdo, 1), Eigen::VectorXd::Zero(1));
     w_.addFactor(
         {std::make_shared<PriorModel>(
-             std::vector<StateBlock>{vectorBlock(block::kTdOdo, 1)}, Eigen::VectorXd::Zero(1),
+             std::vector<StateBlock>{vectorBlock(state::kTdOdo, 1)}, Eigen::VectorXd::Zero(1),
              Eigen::MatrixXd::Constant(1, 1, std::pow(o_.odometer_delay_sigma, 2))),
-         {block::kTdOdo},
+         {state::kTdOdo},
          0.0,
          "odometer_delay_prior"});
   }
@@ -182,9 +182,9 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
   est.calib.p_b_m = w_.value(kPbm);
   est.calib.q_b_m = quatFromWxyz(w_.value(kQbm).data());
   if (o_.estimate_odometer_delay) {
-    const Eigen::MatrixXd C = w_.covariance({e.sv, e.sw, kPbm, kQbm, block::kTdOdo});
+    const Eigen::MatrixXd C = w_.covariance({e.sv, e.sw, kPbm, kQbm, state::kTdOdo});
     est.cov = C.topLeftCorner(8, 8);
-    est.odometer_delay_s = w_.value(block::kTdOdo)[0];
+    est.odometer_delay_s = w_.value(state::kTdOdo)[0];
     est.odometer_delay_sd_s = std::sqrt(C(8, 8));
   } else {
     est.cov = w_.covariance({e.sv, e.sw, kPbm, kQbm});
@@ -218,25 +218,25 @@ void FactorGraphCore::outputTrajectory(const FgoEpoch& from, const FgoEpoch& to)
 void FactorGraphCore::marginalizeOldest() {
   const FgoEpoch old = epochs_.front();
   epochs_.pop_front();
-  const std::vector<std::string> mine = old.all();
-  const std::set<std::string> mine_set(mine.begin(), mine.end());
+  const std::vector<StateKey> mine = old.all();
+  const std::set<StateKey> mine_set(mine.begin(), mine.end());
   // Ambiguities seen only by the oldest epoch's factors leave with it.
-  std::set<std::string> epoch_vars;
+  std::set<StateKey> epoch_vars;
   for (const FgoEpoch& e : epochs_) {
-    for (const std::string& v : e.all()) epoch_vars.insert(v);
+    for (const StateKey& v : e.all()) epoch_vars.insert(v);
   }
-  std::map<std::string, bool> still_used;
+  std::map<StateKey, bool> still_used;
   for (const Factor& f : w_.factors()) {
     const bool touches_old = std::any_of(f.vars.begin(), f.vars.end(),
-                                         [&](const std::string& v) { return mine_set.count(v); });
-    const bool touches_epoch = std::any_of(
-        f.vars.begin(), f.vars.end(), [&](const std::string& v) { return epoch_vars.count(v); });
-    for (const std::string& v : f.vars) {
-      if (v.rfind("N:", 0) != 0) continue;
+                                         [&](const StateKey& v) { return mine_set.count(v); });
+    const bool touches_epoch = std::any_of(f.vars.begin(), f.vars.end(),
+                                           [&](const StateKey& v) { return epoch_vars.count(v); });
+    for (const StateKey& v : f.vars) {
+      if (v.what != Quantity::kAmbiguity) continue;
       still_used[v] = still_used[v] || (touches_epoch && !touches_old);
     }
   }
-  std::vector<std::string> drop = mine;
+  std::vector<StateKey> drop = mine;
   for (const auto& [v, used] : still_used) {
     if (!used) drop.push_back(v);
   }
@@ -275,12 +275,12 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     odo->integrateSamples(in_.odom, prev.t, e.t);
     // With the odometer's delay as a state: the IMU's velocity and rate at both ends.
     std::optional<PoseRates> rates;
-    std::vector<std::string> vars{prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm};
+    std::vector<StateKey> vars{prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm};
     if (o_.estimate_odometer_delay) {
       const double density = in_.description.imu_noise.gyro_noise_density;
       rates = PoseRates{x_prev.v_n_b, poseRate(in_.imu, prev.t, x_prev.b_g, density), w_.value(e.v),
                         poseRate(in_.imu, e.t, x_prev.b_g, density)};
-      vars.push_back(block::kTdOdo);
+      vars.push_back(state::kTdOdo);
     }
     std::shared_ptr<const MeasurementModel> model =
         planar(std::make_shared<OdometerPreintegrationModel>(
@@ -293,10 +293,10 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   // docs/design.md).
   const double q_s =
       std::max(in_.description.odom_noise.scale_random_walk, kScaleRandomWalkFloor) * std::sqrt(dt);
-  w_.addFactor({std::make_shared<RandomWalkModel>("s_v", 1, q_s), {prev.sv, e.sv}, 0.0, "rw"});
-  w_.addFactor({std::make_shared<RandomWalkModel>("s_w", 1, q_s), {prev.sw, e.sw}, 0.0, "rw"});
+  w_.addFactor({std::make_shared<RandomWalkModel>(state::kSv, 1, q_s), {prev.sv, e.sv}, 0.0, "rw"});
+  w_.addFactor({std::make_shared<RandomWalkModel>(state::kSw, 1, q_s), {prev.sw, e.sw}, 0.0, "rw"});
   w_.addFactor({std::make_shared<RandomWalkModel>(
-                    "cdt_dot", 1, std::max(o_.clock_drift_noise, 1e-6) * std::sqrt(dt)),
+                    state::kClockDrift, 1, std::max(o_.clock_drift_noise, 1e-6) * std::sqrt(dt)),
                 {prev.cd, e.cd},
                 0.0,
                 "rw"});
@@ -373,7 +373,7 @@ bool FactorGraphCore::rejectOdometer(const FgoEpoch& e) {
   for (const Factor& f : window.factors()) {
     if (f.tag != tag) continue;
     std::vector<const double*> params;
-    for (const std::string& v : f.vars) params.push_back(window.value(v).data());
+    for (const StateKey& v : f.vars) params.push_back(window.value(v).data());
     Eigen::VectorXd r;
     f.model->evaluate(params.data(), r, nullptr);
     const double nis = (*f.sqrt_info * r).squaredNorm();

@@ -7,8 +7,8 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
-#include <string>
 #include <vector>
 
 #include "common/calibration/calibration_inputs.h"
@@ -31,13 +31,13 @@ struct FgoEpoch {
   double t = 0.0;
   int k = 0;
   bool still = false;
-  std::string p, q, v, ba, bg, sv, sw, cd;
+  StateKey p, q, v, ba, bg, sv, sw, cd;  // the quantities at epoch k
   DdEpoch dd;
   std::vector<DdObservation> code_rows, phase_rows;
   std::vector<DopplerObservation> doppler;
   Eigen::Vector3d gyro = Eigen::Vector3d::Zero();
 
-  std::vector<std::string> all() const { return {p, q, v, ba, bg, sv, sw, cd}; }
+  std::vector<StateKey> all() const { return {p, q, v, ba, bg, sv, sw, cd}; }
 };
 
 class FactorGraphCore : public EstimatorCore {
@@ -76,10 +76,11 @@ class FactorGraphCore : public EstimatorCore {
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
   bool rejectOdometer(const FgoEpoch& e);
-  std::string ambiguityVar(const SatId& sat, char band) const;
+  /// The current version of the SD ambiguity of (sat, band); none before its first.
+  std::optional<StateKey> ambiguityVar(const SatId& sat, char band) const;
   void newAmbiguity(const SatId& sat, char band, double value, double lambda);
-  std::vector<std::string> phaseVars(const DdGnssModel& model,
-                                     const std::vector<DdObservation>& rows) const;
+  std::vector<StateKey> phaseVars(const DdGnssModel& model,
+                                  const std::vector<DdObservation>& rows) const;
   /// |residual| / sigma of each of the epoch's code or phase rows at the current values.
   Eigen::VectorXd normalizedRowResiduals(const FgoEpoch& e, bool phase) const;
   bool rejectWorstRow(FgoEpoch& e);
@@ -100,7 +101,7 @@ class FactorGraphCore : public EstimatorCore {
   std::deque<FgoEpoch> epochs_;
   int next_k_ = 0;
   std::map<std::pair<SatId, char>, int> amb_version_;
-  std::set<std::pair<std::string, std::string>> held_fixes_;
+  std::set<std::pair<StateKey, StateKey>> held_fixes_;
   double motion_fed_t_ = -INFINITY;
   double next_output_ = 0.0;
   bool clock_drift_started_ = false;

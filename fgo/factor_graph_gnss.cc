@@ -11,22 +11,21 @@
 #include "common/models/doppler_model.h"
 #include "common/models/prior_model.h"
 #include "fgo/factor_graph_core.h"
-#include "fgo/variable_names.h"
+#include "fgo/factor_tag.h"
 
 namespace giocal {
 
-using fgo_var::kPbg;
 using fgo_var::tagged;
+using state::kPbg;
 
-std::string FactorGraphCore::ambiguityVar(const SatId& sat, char band) const {
+std::optional<StateKey> FactorGraphCore::ambiguityVar(const SatId& sat, char band) const {
   const auto it = amb_version_.find({sat, band});
-  if (it == amb_version_.end()) return "";
-  return "N:" + sat.str() + ":" + std::string(1, band) + "#" + std::to_string(it->second);
+  if (it == amb_version_.end()) return std::nullopt;
+  return ambiguityKey(sat, band, it->second);
 }
 
 void FactorGraphCore::newAmbiguity(const SatId& sat, char band, double value, double lambda) {
-  ++amb_version_[{sat, band}];
-  const std::string name = ambiguityVar(sat, band);
+  const StateKey name = ambiguityKey(sat, band, ++amb_version_[{sat, band}]);
   w_.addVariable(vectorBlock(name, 1), Eigen::VectorXd::Constant(1, value));
   // Start from code, as the filter does: 10 m of uncertainty.
   w_.addFactor(
@@ -38,15 +37,16 @@ void FactorGraphCore::newAmbiguity(const SatId& sat, char band, double value, do
        "ambiguity_prior"});
 }
 
-std::vector<std::string> FactorGraphCore::phaseVars(const DdGnssModel& model,
-                                                    const std::vector<DdObservation>& rows) const {
-  // Model block "N:<sat>:<band>" -> the current version of that ambiguity.
-  std::vector<std::string> vars(model.blocks().size());
+std::vector<StateKey> FactorGraphCore::phaseVars(const DdGnssModel& model,
+                                                 const std::vector<DdObservation>& rows) const {
+  // The model's ambiguity blocks (version 0) -> the current version of each ambiguity; the
+  // epoch's position and attitude are the caller's.
+  std::vector<StateKey> vars(model.blocks().size());
   vars[2] = kPbg;
   for (const DdObservation& o : rows) {
     for (const SatId& sat : {o.sat, o.ref}) {
       const int b = model.ambiguityBlock(sat, o.band);
-      if (b >= 0) vars[static_cast<size_t>(b)] = ambiguityVar(sat, o.band);
+      if (b >= 0) vars[static_cast<size_t>(b)] = *ambiguityVar(sat, o.band);
     }
   }
   return vars;
@@ -60,9 +60,9 @@ void FactorGraphCore::gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsE
   const Eigen::Vector3d ant_e = frame_.ecefFromEnu(x.p_n_b + x.q_n_b * w_.value(kPbg));
   e.dd = builder_.build(rover, base, ant_e);
   for (const SdAmbiguity& a : e.dd.ambiguities) {
-    const std::string cur = ambiguityVar(a.sat, a.band);
-    if (a.slipped || cur.empty() || !w_.has(cur)) {
-      run_->count(Counter::kAmbiguityResets, a.slipped && !cur.empty());
+    const std::optional<StateKey> cur = ambiguityVar(a.sat, a.band);
+    if (a.slipped || !cur || !w_.has(*cur)) {
+      run_->count(Counter::kAmbiguityResets, a.slipped && cur);
       newAmbiguity(a.sat, a.band, a.code_value, a.lambda);
     }
   }
@@ -128,7 +128,7 @@ void FactorGraphCore::addGnssRowFactors(const FgoEpoch& e) {
   if (!e.phase_rows.empty()) {
     auto model =
         std::make_shared<DdGnssModel>(frame_, e.dd.geometry, e.phase_rows, e.dd.undiff_variance);
-    std::vector<std::string> vars = phaseVars(*model, e.phase_rows);
+    std::vector<StateKey> vars = phaseVars(*model, e.phase_rows);
     vars[0] = e.p;
     vars[1] = e.q;
     w_.addFactor({model, vars, 0.0, tagged("dd_phase", e.k)});
@@ -145,12 +145,11 @@ Eigen::VectorXd FactorGraphCore::normalizedRowResiduals(const FgoEpoch& e, bool 
   const std::vector<DdObservation>& rows = phase ? e.phase_rows : e.code_rows;
   if (rows.empty()) return Eigen::VectorXd::Zero(1);
   const DdGnssModel m(frame_, e.dd.geometry, rows, e.dd.undiff_variance);
-  std::vector<std::string> vars =
-      phase ? phaseVars(m, rows) : std::vector<std::string>{"", "", kPbg};
+  std::vector<StateKey> vars = phase ? phaseVars(m, rows) : std::vector<StateKey>{e.p, e.q, kPbg};
   vars[0] = e.p;
   vars[1] = e.q;
   std::vector<const double*> params;
-  for (const std::string& v : vars) params.push_back(w_.value(v).data());
+  for (const StateKey& v : vars) params.push_back(w_.value(v).data());
   Eigen::VectorXd r;
   m.evaluate(params.data(), r, nullptr);
   return r.cwiseAbs().cwiseQuotient(m.covariance().diagonal().cwiseSqrt());
@@ -191,8 +190,8 @@ bool FactorGraphCore::rejectWorstRow(FgoEpoch& e) {
 bool FactorGraphCore::resolve(FgoEpoch& e) {
   const long na = static_cast<long>(e.phase_rows.size());
   if (na < o_.lambda.min_fixed) return false;
-  std::vector<std::string> amb;
-  auto index = [&](const std::string& n) {
+  std::vector<StateKey> amb;
+  auto index = [&](const StateKey& n) {
     const auto it = std::find(amb.begin(), amb.end(), n);
     if (it != amb.end()) return static_cast<long>(it - amb.begin());
     amb.push_back(n);
@@ -201,8 +200,8 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
   std::vector<std::pair<int, int>> pairs;
   std::vector<double> el;
   for (const DdObservation& o : e.phase_rows) {
-    pairs.push_back({static_cast<int>(index(ambiguityVar(o.sat, o.band))),
-                     static_cast<int>(index(ambiguityVar(o.ref, o.band)))});
+    pairs.push_back({static_cast<int>(index(*ambiguityVar(o.sat, o.band))),
+                     static_cast<int>(index(*ambiguityVar(o.ref, o.band)))});
     el.push_back(e.dd.geometry[static_cast<size_t>(o.sat_index)].el);
   }
   // Float DD ambiguities and their covariance from the window.
@@ -225,8 +224,8 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
   std::vector<DdAmbiguityFix> fresh;
   for (size_t k = 0; k < fix.indices.size(); ++k) {
     const auto [i, j] = pairs[static_cast<size_t>(fix.indices[k])];
-    const std::pair<std::string, std::string> key{amb[static_cast<size_t>(i)],
-                                                  amb[static_cast<size_t>(j)]};
+    const std::pair<StateKey, StateKey> key{amb[static_cast<size_t>(i)],
+                                            amb[static_cast<size_t>(j)]};
     if (held_fixes_.count(key)) continue;
     fresh.push_back({key.first, key.second, fix.values[static_cast<long>(k)]});
   }

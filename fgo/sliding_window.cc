@@ -18,14 +18,15 @@ namespace giocal {
 void SlidingWindow::addVariable(const StateBlock& block, const Eigen::VectorXd& value) {
   ++version_;
   ++structure_;
-  if (has(block.name)) throw std::invalid_argument("window variable '" + block.name + "' exists");
+  if (has(block.key))
+    throw std::invalid_argument("window variable '" + block.key.str() + "' exists");
   if (value.size() != block.ambientSize()) {
-    throw std::invalid_argument("window variable '" + block.name + "': value size");
+    throw std::invalid_argument("window variable '" + block.key.str() + "': value size");
   }
-  vars_[block.name] = {block, value, false, {}};
+  vars_[block.key] = {block, value, false, {}};
 }
 
-void SlidingWindow::removeVariable(const std::string& name) {
+void SlidingWindow::removeVariable(const StateKey& name) {
   ++version_;
   ++structure_;
   vars_.erase(name);
@@ -37,33 +38,33 @@ void SlidingWindow::removeVariable(const std::string& name) {
                  factors_.end());
 }
 
-Eigen::VectorXd& SlidingWindow::value(const std::string& name) {
+Eigen::VectorXd& SlidingWindow::value(const StateKey& name) {
   ++version_;
   const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
+  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name.str() + "'");
   return it->second.value;
 }
 
-const Eigen::VectorXd& SlidingWindow::value(const std::string& name) const {
+const Eigen::VectorXd& SlidingWindow::value(const StateKey& name) const {
   const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
+  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name.str() + "'");
   return it->second.value;
 }
 
-const StateBlock& SlidingWindow::block(const std::string& name) const {
+const StateBlock& SlidingWindow::block(const StateKey& name) const {
   const auto it = vars_.find(name);
-  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name + "'");
+  if (it == vars_.end()) throw std::out_of_range("no window variable '" + name.str() + "'");
   return it->second.block;
 }
 
-void SlidingWindow::setConstant(const std::string& name, bool constant) {
+void SlidingWindow::setConstant(const StateKey& name, bool constant) {
   ++version_;
   ++structure_;
   value(name);
   vars_[name].constant = constant;
 }
 
-void SlidingWindow::holdComponents(const std::string& name, const std::vector<int>& components) {
+void SlidingWindow::holdComponents(const StateKey& name, const std::vector<int>& components) {
   ++version_;
   ++structure_;
   value(name);
@@ -90,11 +91,11 @@ int SlidingWindow::removeFactors(const std::string& tag) {
   return static_cast<int>(n - factors_.size());
 }
 
-std::vector<std::string> SlidingWindow::estimatedVariables() const {
-  std::set<std::string> used;
+std::vector<StateKey> SlidingWindow::estimatedVariables() const {
+  std::set<StateKey> used;
   for (const Factor& f : factors_) used.insert(f.vars.begin(), f.vars.end());
-  std::vector<std::string> out;
-  for (const std::string& n : used) {
+  std::vector<StateKey> out;
+  for (const StateKey& n : used) {
     if (!vars_.at(n).constant) out.push_back(n);
   }
   return out;
@@ -106,10 +107,10 @@ SlidingWindow::SolveReport SlidingWindow::solveWithCeres(int max_iterations,
   ceres::Problem::Options po;
   po.manifold_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(po);
-  std::set<std::string> added;
+  std::set<StateKey> added;
   for (const Factor& f : factors_) {
     std::vector<double*> ptrs;
-    for (const std::string& n : f.vars) {
+    for (const StateKey& n : f.vars) {
       Variable& v = vars_.at(n);
       ptrs.push_back(v.value.data());
       if (added.insert(n).second) {
@@ -119,7 +120,7 @@ SlidingWindow::SolveReport SlidingWindow::solveWithCeres(int max_iterations,
     ceres::LossFunction* loss = f.huber > 0.0 ? new ceres::HuberLoss(f.huber) : nullptr;
     problem.AddResidualBlock(new ModelCostFunction(f.model, f.sqrt_info), loss, ptrs);
   }
-  for (const std::string& n : added) {
+  for (const StateKey& n : added) {
     Variable& v = vars_.at(n);
     if (v.block.kind == BlockKind::kRotation) {
       problem.SetManifold(v.value.data(), new RightQuaternionManifold);
@@ -148,7 +149,7 @@ SlidingWindow::SolveReport SlidingWindow::solveWithCeres(int max_iterations,
   ceres::Solver::Summary summary;
   ceres::Solve(options, &problem, &summary);
   // Rotations stay unit quaternions.
-  for (const std::string& n : added) {
+  for (const StateKey& n : added) {
     Variable& v = vars_.at(n);
     if (v.block.kind == BlockKind::kRotation) v.value.normalize();
   }
@@ -156,11 +157,11 @@ SlidingWindow::SolveReport SlidingWindow::solveWithCeres(int max_iterations,
           summary.final_cost};
 }
 
-std::map<std::string, int> SlidingWindow::tangentOffsets(const std::vector<std::string>& order,
-                                                         int* size) const {
-  std::map<std::string, int> offset;
+std::map<StateKey, int> SlidingWindow::tangentOffsets(const std::vector<StateKey>& order,
+                                                      int* size) const {
+  std::map<StateKey, int> offset;
   int n = 0;
-  for (const std::string& name : order) {
+  for (const StateKey& name : order) {
     offset[name] = n;
     n += vars_.at(name).block.tangentSize();
   }
@@ -169,7 +170,7 @@ std::map<std::string, int> SlidingWindow::tangentOffsets(const std::vector<std::
 }
 
 std::vector<SlidingWindow::FactorLayout> SlidingWindow::layouts(
-    const std::map<std::string, int>& offset, const std::vector<const Factor*>& factors) const {
+    const std::map<StateKey, int>& offset, const std::vector<const Factor*>& factors) const {
   std::vector<FactorLayout> out;
   out.reserve(factors.size());
   for (const Factor* f : factors) {
@@ -228,11 +229,11 @@ void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& facto
   }
 }
 
-void SlidingWindow::linearize(const std::vector<std::string>& order,
+void SlidingWindow::linearize(const std::vector<StateKey>& order,
                               const std::vector<const Factor*>& factors, Eigen::MatrixXd& H,
                               Eigen::VectorXd& b) const {
   int n = 0;
-  const std::map<std::string, int> offset = tangentOffsets(order, &n);
+  const std::map<StateKey, int> offset = tangentOffsets(order, &n);
   H = Eigen::MatrixXd::Zero(n, n);
   b = Eigen::VectorXd::Zero(n);
   forEachWhitenedFactor(
@@ -248,33 +249,33 @@ void SlidingWindow::linearize(const std::vector<std::string>& order,
       &b);
 }
 
-void SlidingWindow::marginalize(const std::vector<std::string>& names) {
+void SlidingWindow::marginalize(const std::vector<StateKey>& names) {
   ++version_;
   ++structure_;
-  const std::set<std::string> drop(names.begin(), names.end());
+  const std::set<StateKey> drop(names.begin(), names.end());
   std::vector<const Factor*> touching;
-  std::set<std::string> keep_set;
+  std::set<StateKey> keep_set;
   for (const Factor& f : factors_) {
     const bool t = std::any_of(f.vars.begin(), f.vars.end(),
-                               [&](const std::string& v) { return drop.count(v) != 0; });
+                               [&](const StateKey& v) { return drop.count(v) != 0; });
     if (!t) continue;
     touching.push_back(&f);
-    for (const std::string& v : f.vars) {
+    for (const StateKey& v : f.vars) {
       if (!drop.count(v) && !vars_.at(v).constant) keep_set.insert(v);
     }
   }
-  std::vector<std::string> m_order, k_order(keep_set.begin(), keep_set.end());
-  for (const std::string& v : names) {
+  std::vector<StateKey> m_order, k_order(keep_set.begin(), keep_set.end());
+  for (const StateKey& v : names) {
     if (has(v) && !vars_.at(v).constant) m_order.push_back(v);
   }
   if (!touching.empty() && !k_order.empty()) {
-    std::vector<std::string> order = m_order;
+    std::vector<StateKey> order = m_order;
     order.insert(order.end(), k_order.begin(), k_order.end());
     Eigen::MatrixXd H;
     Eigen::VectorXd b;
     linearize(order, touching, H, b);
     long nm = 0;
-    for (const std::string& v : m_order) nm += vars_.at(v).block.tangentSize();
+    for (const StateKey& v : m_order) nm += vars_.at(v).block.tangentSize();
     const long nk = H.rows() - nm;
     // Schur complement with a pseudo-inverse of the marginalized block (it may be singular along
     // directions nothing observed).
@@ -304,7 +305,7 @@ void SlidingWindow::marginalize(const std::vector<std::string>& names) {
       }
       std::vector<StateBlock> blocks;
       Eigen::VectorXd x_lin(0);
-      for (const std::string& v : k_order) {
+      for (const StateKey& v : k_order) {
         StateBlock blk = vars_.at(v).block;
         blocks.push_back(blk);
         const Eigen::VectorXd& x = vars_.at(v).value;
@@ -314,12 +315,12 @@ void SlidingWindow::marginalize(const std::vector<std::string>& names) {
       Factor prior{std::make_shared<MarginalPriorModel>(blocks, x_lin, J, r0), k_order, 0.0,
                    "marginal_prior"};
       // Drop the old factors and variables, then add the new prior.
-      for (const std::string& v : names) removeVariable(v);
+      for (const StateKey& v : names) removeVariable(v);
       addFactor(std::move(prior));
       return;
     }
   }
-  for (const std::string& v : names) removeVariable(v);
+  for (const StateKey& v : names) removeVariable(v);
 }
 
 }  // namespace giocal

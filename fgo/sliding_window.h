@@ -11,13 +11,14 @@
 #include <vector>
 
 #include "common/models/measurement_model.h"
+#include "common/models/state_key.h"
 
 namespace giocal {
 
 /// A model bound to window variables: vars[k] is the variable for model block k.
 struct Factor {
   std::shared_ptr<const MeasurementModel> model;
-  std::vector<std::string> vars;
+  std::vector<StateKey> vars;
   double huber = 0.0;  // > 0: Huber loss with this threshold on the whitened residual
   std::string tag;     // what it is, for finding it again ("dd_phase#12", "fix", ...)
   // The model's whitener (its covariance is fixed): set when the factor enters a window.
@@ -32,17 +33,17 @@ enum class WindowSolver { kGaussNewton, kCeres };
 class SlidingWindow {
  public:
   void setSolver(WindowSolver solver) { solver_ = solver; }
-  /// `block.name` is the variable's name; values are ambient ([w,x,y,z] for rotations).
+  /// `block.key` is the variable; values are ambient ([w,x,y,z] for rotations).
   void addVariable(const StateBlock& block, const Eigen::VectorXd& value);
-  void removeVariable(const std::string& name);  // and every factor on it
-  bool has(const std::string& name) const { return vars_.count(name) != 0; }
-  Eigen::VectorXd& value(const std::string& name);
-  const Eigen::VectorXd& value(const std::string& name) const;
-  const StateBlock& block(const std::string& name) const;
+  void removeVariable(const StateKey& name);  // and every factor on it
+  bool has(const StateKey& name) const { return vars_.count(name) != 0; }
+  Eigen::VectorXd& value(const StateKey& name);
+  const Eigen::VectorXd& value(const StateKey& name) const;
+  const StateBlock& block(const StateKey& name) const;
   /// Constant variables are not estimated (a lever arm given as known).
-  void setConstant(const std::string& name, bool constant);
+  void setConstant(const StateKey& name, bool constant);
   /// Components of a vector variable held at their value (p_b_m.z in planar motion).
-  void holdComponents(const std::string& name, const std::vector<int>& components);
+  void holdComponents(const StateKey& name, const std::vector<int>& components);
 
   void addFactor(Factor f);
   /// Removes the factors whose tag equals `tag`; returns how many.
@@ -61,17 +62,17 @@ class SlidingWindow {
 
   /// Whitened Gauss-Newton system over `order` (tangent, in that order) from `factors` at the
   /// current values: H = sum J^T J, b = sum J^T r. Factors' other variables are ignored.
-  void linearize(const std::vector<std::string>& order, const std::vector<const Factor*>& factors,
+  void linearize(const std::vector<StateKey>& order, const std::vector<const Factor*>& factors,
                  Eigen::MatrixXd& H, Eigen::VectorXd& b) const;
   /// The estimated variables that have factors, in a fixed order.
-  std::vector<std::string> estimatedVariables() const;
+  std::vector<StateKey> estimatedVariables() const;
   /// Marginal covariance (tangent) of `names` from the whole window's robust Hessian (held
   /// components keep their factors' information). The factorization is kept until the window
   /// changes: the covariances asked for at one state, and after a Gauss-Newton solve, share it.
-  Eigen::MatrixXd covariance(const std::vector<std::string>& names) const;
+  Eigen::MatrixXd covariance(const std::vector<StateKey>& names) const;
 
   /// Removes `names` and the factors on them, leaving one linear prior on their neighbours.
-  void marginalize(const std::vector<std::string>& names);
+  void marginalize(const std::vector<StateKey>& names);
 
  private:
   /// A factor's variable in the window's tangent (global) and in the factor's columns (local).
@@ -97,10 +98,10 @@ class SlidingWindow {
   using FactorVisitor =
       std::function<void(size_t k, const FactorLayout& layout, const Eigen::MatrixXd& Hf)>;
   /// Tangent offset of each of `order`'s variables; `size` gets the total.
-  std::map<std::string, int> tangentOffsets(const std::vector<std::string>& order, int* size) const;
+  std::map<StateKey, int> tangentOffsets(const std::vector<StateKey>& order, int* size) const;
   /// The layouts of `factors` over the variables in `offset` (others are left out); factors with
   /// none of them are skipped.
-  std::vector<FactorLayout> layouts(const std::map<std::string, int>& offset,
+  std::vector<FactorLayout> layouts(const std::map<StateKey, int>& offset,
                                     const std::vector<const Factor*>& factors) const;
   /// Whitens and linearizes the factors at the current values, handing each factor's J^T J to
   /// `visit` and adding J^T r into *b unless b is null.
@@ -111,7 +112,7 @@ class SlidingWindow {
   SolveReport solveWithCeres(int max_iterations, double function_tolerance);
   SolveReport solveGaussNewton(int max_iterations, double function_tolerance);
 
-  std::map<std::string, Variable> vars_;
+  std::map<StateKey, Variable> vars_;
   std::vector<Factor> factors_;
   long version_ = 0;    // bumped by every change of variables, values or factors
   long structure_ = 0;  // bumped by every change of variables or factors (not of values)

@@ -15,7 +15,7 @@ namespace giocal {
 struct SlidingWindow::WindowPlan {
   long structure = -1;
   int n = 0;
-  std::map<std::string, int> offset;
+  std::map<StateKey, int> offset;
   std::vector<int> held;  // tangent indices held at their value in a solve
   std::vector<FactorLayout> layouts;
   Eigen::SparseMatrix<double> pattern;  // of H's lower triangle, values zero
@@ -112,9 +112,9 @@ void forEachLowerEntry(const Segments& segments, Fn&& fn) {
 std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
   auto p = std::make_shared<WindowPlan>();
   p->structure = structure_;
-  const std::vector<std::string> order = estimatedVariables();
+  const std::vector<StateKey> order = estimatedVariables();
   p->offset = tangentOffsets(order, &p->n);
-  for (const std::string& name : order) {
+  for (const StateKey& name : order) {
     for (int c : vars_.at(name).held) p->held.push_back(p->offset.at(name) + c);
   }
   std::vector<const Factor*> all;
@@ -127,7 +127,7 @@ std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
   // a factor with it (row blocks, its own first).
   const int n = p->n;
   std::vector<int> block_of(static_cast<size_t>(n), -1), start, size;
-  for (const std::string& name : order) {
+  for (const StateKey& name : order) {
     block_of[static_cast<size_t>(p->offset.at(name))] = static_cast<int>(start.size());
     start.push_back(p->offset.at(name));
     size.push_back(vars_.at(name).block.tangentSize());
@@ -225,13 +225,13 @@ SlidingWindow::Linearization& SlidingWindow::factorization() const {
   return *linearization_;
 }
 
-Eigen::MatrixXd SlidingWindow::covariance(const std::vector<std::string>& names) const {
+Eigen::MatrixXd SlidingWindow::covariance(const std::vector<StateKey>& names) const {
   Linearization& f = factorization();  // (mutable: factorized on first use)
   std::vector<int> idx;
-  for (const std::string& name : names) {
+  for (const StateKey& name : names) {
     const auto it = f.plan->offset.find(name);
     if (it == f.plan->offset.end())
-      throw std::out_of_range("no estimated window variable '" + name + "'");
+      throw std::out_of_range("no estimated window variable '" + name.str() + "'");
     for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
   }
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(f.plan->n, static_cast<long>(idx.size()));
@@ -252,7 +252,7 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
   std::shared_ptr<Linearization> lin = linearizeWindow();
   SolveReport report{std::isfinite(lin->cost), 0, lin->cost};
   if (!report.usable) return report;
-  std::vector<std::pair<std::string, Eigen::VectorXd>> saved;
+  std::vector<std::pair<StateKey, Eigen::VectorXd>> saved;
   for (const auto& [name, at] : lin->plan->offset) saved.push_back({name, vars_.at(name).value});
   double damping = 0.0;
   for (int it = 0; it < max_iterations; ++it) {

@@ -35,10 +35,10 @@ void pinToReference(CalibrationFilter& f, const ObservabilityJob& job) {
   f.movePose(x.p_n_b, x.v_n_b, x.q_n_b);
   StateRegistry& s = f.state();
   const OdometerCalibration& c = job.linearize_at;
-  s.value(block::kSv)[0] = c.s_v;
-  s.value(block::kSw)[0] = c.s_w;
-  s.value(block::kPbm) = c.p_b_m;
-  s.value(block::kQbm) << c.q_b_m.w(), c.q_b_m.x(), c.q_b_m.y(), c.q_b_m.z();
+  s.value(state::kSv)[0] = c.s_v;
+  s.value(state::kSw)[0] = c.s_w;
+  s.value(state::kPbm) = c.p_b_m;
+  s.value(state::kQbm) << c.q_b_m.w(), c.q_b_m.x(), c.q_b_m.y(), c.q_b_m.z();
 }
 
 Vec8 headingCorrelation(const CalibrationFilter& f) {
@@ -46,11 +46,11 @@ Vec8 headingCorrelation(const CalibrationFilter& f) {
   const Eigen::MatrixXd& P = s.covariance();
   // The heading error (about n's vertical) of a right-multiplied attitude error dtheta_b.
   Eigen::RowVectorXd h = Eigen::RowVectorXd::Zero(s.dim());
-  h.segment<3>(s.offset(nav_var::kQ)) = f.nav().q_n_b.toRotationMatrix().row(2);
-  const std::array<int, 8> idx = {s.offset(block::kSv),      s.offset(block::kSw),
-                                  s.offset(block::kPbm),     s.offset(block::kPbm) + 1,
-                                  s.offset(block::kPbm) + 2, s.offset(block::kQbm),
-                                  s.offset(block::kQbm) + 1, s.offset(block::kQbm) + 2};
+  h.segment<3>(s.offset(state::kQ)) = f.nav().q_n_b.toRotationMatrix().row(2);
+  const std::array<int, 8> idx = {s.offset(state::kSv),      s.offset(state::kSw),
+                                  s.offset(state::kPbm),     s.offset(state::kPbm) + 1,
+                                  s.offset(state::kPbm) + 2, s.offset(state::kQbm),
+                                  s.offset(state::kQbm) + 1, s.offset(state::kQbm) + 2};
   const Eigen::VectorXd Ph = P * h.transpose();
   const double var_h = h.dot(Ph);
   Vec8 r = Vec8::Zero();

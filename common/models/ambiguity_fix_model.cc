@@ -6,11 +6,11 @@ namespace giocal {
 
 AmbiguityFixModel::AmbiguityFixModel(std::vector<DdAmbiguityFix> fixes, double sigma_cycles)
     : fixes_(std::move(fixes)), sigma_(sigma_cycles) {
-  auto blockOf = [&](const std::string& name) {
+  auto blockOf = [&](const StateKey& key) {
     const auto it = std::find_if(blocks_.begin(), blocks_.end(),
-                                 [&](const StateBlock& b) { return b.name == name; });
+                                 [&](const StateBlock& b) { return b.key == key; });
     if (it != blocks_.end()) return static_cast<int>(it - blocks_.begin());
-    blocks_.push_back(vectorBlock(name, 1));
+    blocks_.push_back(vectorBlock(key, 1));
     return static_cast<int>(blocks_.size()) - 1;
   };
   for (const DdAmbiguityFix& f : fixes_)

@@ -10,8 +10,8 @@
 namespace giocal {
 
 struct DdAmbiguityFix {
-  std::string sat_block, ref_block;  // names of the SD ambiguity blocks [cycles]
-  double value = 0.0;                // the integer DD ambiguity
+  StateKey sat_block, ref_block;  // the SD ambiguity states [cycles]
+  double value = 0.0;             // the integer DD ambiguity
 };
 
 class AmbiguityFixModel : public MeasurementModel {

@@ -11,13 +11,13 @@ DdGnssModel::DdGnssModel(const LocalFrame& frame, std::vector<SdGeometry> geomet
                          std::vector<DdObservation> observations,
                          std::vector<std::pair<double, double>> undiff_variance)
     : frame_(frame), geometry_(std::move(geometry)), obs_(std::move(observations)) {
-  blocks_ = {vectorBlock(block::kP), rotationBlock(block::kQ), vectorBlock("p_b_g")};
+  blocks_ = {vectorBlock(state::kP), rotationBlock(state::kQ), vectorBlock(state::kPbg)};
   for (const DdObservation& o : obs_) {
     if (!o.phase) continue;
     for (const SatId& s : {o.sat, o.ref}) {
       if (ambiguityBlock(s, o.band) < 0) {
         amb_keys_.push_back({s, o.band});
-        blocks_.push_back(vectorBlock("N:" + s.str() + ":" + std::string(1, o.band), 1));
+        blocks_.push_back(vectorBlock(ambiguityKey(s, o.band), 1));
       }
     }
   }

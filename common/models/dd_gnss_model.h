@@ -16,7 +16,7 @@ class DdGnssModel : public MeasurementModel {
  public:
   /// `undiff_variance[i]` is the undifferenced variance (rover plus base) of geometry i's code and
   /// phase: {code, phase} [m^2]. Phase rows get one ambiguity block per satellite and band,
-  /// named "N:<sat>:<band>" in cycles.
+  /// keyed ambiguityKey(sat, band) (version 0), in cycles.
   DdGnssModel(const LocalFrame& frame, std::vector<SdGeometry> geometry,
               std::vector<DdObservation> observations,
               std::vector<std::pair<double, double>> undiff_variance);

@@ -10,9 +10,9 @@ DopplerModel::DopplerModel(const Eigen::Matrix3d& R_e_n, const Eigen::Vector3d& 
     : R_e_n_(R_e_n), gyro_(gyro), obs_(std::move(observations)) {}
 
 const std::vector<StateBlock>& DopplerModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{vectorBlock(block::kV), rotationBlock(block::kQ),
-                                               vectorBlock(block::kBg), vectorBlock("p_b_g"),
-                                               vectorBlock("cdt_dot", 1)};
+  static const std::vector<StateBlock> kBlocks{vectorBlock(state::kV), rotationBlock(state::kQ),
+                                               vectorBlock(state::kBg), vectorBlock(state::kPbg),
+                                               vectorBlock(state::kClockDrift, 1)};
   return kBlocks;
 }
 

@@ -23,8 +23,8 @@ double yawOf(const Eigen::Matrix3d& R, Eigen::RowVector3d* d_theta) {
 }  // namespace
 
 const std::vector<StateBlock>& HeadingChangeModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{rotationBlock(block::at(block::kQ, 'i')),
-                                               rotationBlock(block::at(block::kQ, 'j'))};
+  static const std::vector<StateBlock> kBlocks{rotationBlock(at(state::kQ, Copy::kI)),
+                                               rotationBlock(at(state::kQ, Copy::kJ))};
   return kBlocks;
 }
 

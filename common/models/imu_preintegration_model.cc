@@ -7,12 +7,12 @@ namespace giocal {
 const std::vector<StateBlock>& ImuPreintegrationModel::blocks() const {
   static const std::vector<StateBlock> kBlocks = [] {
     std::vector<StateBlock> b;
-    for (char e : {'i', 'j'}) {
-      b.push_back(vectorBlock(block::at(block::kP, e)));
-      b.push_back(rotationBlock(block::at(block::kQ, e)));
-      b.push_back(vectorBlock(block::at(block::kV, e)));
-      b.push_back(vectorBlock(block::at(block::kBa, e)));
-      b.push_back(vectorBlock(block::at(block::kBg, e)));
+    for (Copy e : {Copy::kI, Copy::kJ}) {
+      b.push_back(vectorBlock(at(state::kP, e)));
+      b.push_back(rotationBlock(at(state::kQ, e)));
+      b.push_back(vectorBlock(at(state::kV, e)));
+      b.push_back(vectorBlock(at(state::kBa, e)));
+      b.push_back(vectorBlock(at(state::kBg, e)));
     }
     return b;
   }();

@@ -21,7 +21,8 @@ MeasurementRows linearize(const MeasurementModel& model, const std::vector<Block
     const int off = bindings[k].error_offset;
     if (off < 0) continue;
     if (off + blocks[k].tangentSize() > error_state_size) {
-      throw std::out_of_range(model.name() + ": block " + blocks[k].name + " outside the state");
+      throw std::out_of_range(model.name() + ": block " + blocks[k].key.str() +
+                              " outside the state");
     }
     rows.H.middleCols(off, blocks[k].tangentSize()) += J[k];
   }

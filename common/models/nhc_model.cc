@@ -6,9 +6,9 @@
 namespace giocal {
 
 const std::vector<StateBlock>& NhcModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{vectorBlock(block::kV), rotationBlock(block::kQ),
-                                               vectorBlock(block::kBg), vectorBlock(block::kPbm),
-                                               rotationBlock(block::kQbm)};
+  static const std::vector<StateBlock> kBlocks{vectorBlock(state::kV), rotationBlock(state::kQ),
+                                               vectorBlock(state::kBg), vectorBlock(state::kPbm),
+                                               rotationBlock(state::kQbm)};
   return kBlocks;
 }
 

@@ -8,17 +8,17 @@
 namespace giocal {
 
 const std::vector<StateBlock>& OdometerPreintegrationModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{vectorBlock(block::at(block::kP, 'i')),
-                                               rotationBlock(block::at(block::kQ, 'i')),
-                                               vectorBlock(block::at(block::kP, 'j')),
-                                               rotationBlock(block::at(block::kQ, 'j')),
-                                               vectorBlock(block::at(block::kSv, 'i'), 1),
-                                               vectorBlock(block::at(block::kSw, 'i'), 1),
-                                               vectorBlock(block::kPbm),
-                                               rotationBlock(block::kQbm)};
+  static const std::vector<StateBlock> kBlocks{vectorBlock(at(state::kP, Copy::kI)),
+                                               rotationBlock(at(state::kQ, Copy::kI)),
+                                               vectorBlock(at(state::kP, Copy::kJ)),
+                                               rotationBlock(at(state::kQ, Copy::kJ)),
+                                               vectorBlock(at(state::kSv, Copy::kI), 1),
+                                               vectorBlock(at(state::kSw, Copy::kI), 1),
+                                               vectorBlock(state::kPbm),
+                                               rotationBlock(state::kQbm)};
   static const std::vector<StateBlock> kWithDelay = [] {
     std::vector<StateBlock> b = kBlocks;
-    b.push_back(vectorBlock(block::kTdOdo, 1));
+    b.push_back(vectorBlock(state::kTdOdo, 1));
     return b;
   }();
   return rates_ ? kWithDelay : kBlocks;

@@ -10,8 +10,8 @@ PlanarMotionProjection::PlanarMotionProjection(std::shared_ptr<const Measurement
     : ProjectedModel(std::move(model), "+planar") {
   const auto& b = blocks();
   for (size_t k = 0; k < b.size(); ++k) {
-    if (b[k].name == block::kPbm) p_block_ = static_cast<int>(k);
-    if (b[k].name == block::kQbm) q_block_ = static_cast<int>(k);
+    if (b[k].key == state::kPbm) p_block_ = static_cast<int>(k);
+    if (b[k].key == state::kQbm) q_block_ = static_cast<int>(k);
   }
   if (p_block_ < 0 || q_block_ < 0) {
     throw std::invalid_argument(innerModel().name() + " has no p_b_m and q_b_m blocks to project");

@@ -11,7 +11,7 @@ namespace giocal {
 
 class PlanarMotionProjection : public ProjectedModel {
  public:
-  /// `inner` must have blocks named p_b_m and q_b_m. Throws std::invalid_argument otherwise.
+  /// `inner` must have p_b_m and q_b_m blocks. Throws std::invalid_argument otherwise.
   explicit PlanarMotionProjection(std::shared_ptr<const MeasurementModel> inner);
 
  protected:

@@ -8,8 +8,8 @@
 namespace giocal {
 
 const std::vector<StateBlock>& PositionModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{vectorBlock(block::kP), rotationBlock(block::kQ),
-                                               vectorBlock("p_b_g")};
+  static const std::vector<StateBlock> kBlocks{vectorBlock(state::kP), rotationBlock(state::kQ),
+                                               vectorBlock(state::kPbg)};
   return kBlocks;
 }
 

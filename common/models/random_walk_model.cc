@@ -2,8 +2,8 @@
 
 namespace giocal {
 
-RandomWalkModel::RandomWalkModel(const std::string& name, int size, double sigma)
-    : blocks_{vectorBlock(block::at(name, 'i'), size), vectorBlock(block::at(name, 'j'), size)},
+RandomWalkModel::RandomWalkModel(const StateKey& key, int size, double sigma)
+    : blocks_{vectorBlock(at(key, Copy::kI), size), vectorBlock(at(key, Copy::kJ), size)},
       size_(size),
       sigma_(sigma) {}
 

@@ -10,10 +10,10 @@ namespace giocal {
 
 class RandomWalkModel : public MeasurementModel {
  public:
-  /// `name`: the state's block name; size: its dimension; sigma = q sqrt(dt).
-  RandomWalkModel(const std::string& name, int size, double sigma);
+  /// `key`: the state; size: its dimension; sigma = q sqrt(dt).
+  RandomWalkModel(const StateKey& key, int size, double sigma);
   std::string name() const override { return "random_walk"; }
-  /// name@i, name@j
+  /// key@i, key@j
   const std::vector<StateBlock>& blocks() const override { return blocks_; }
   int residualSize() const override { return size_; }
   void evaluate(const double* const* params, Eigen::VectorXd& residual,

@@ -8,9 +8,11 @@ StandstillProjection::StandstillProjection(std::shared_ptr<const MeasurementMode
     : ProjectedModel(std::move(model), "+standstill") {
   const auto& b = blocks();
   for (size_t k = 0; k < b.size(); ++k) {
-    for (const std::string& n : {block::kSv, block::kSw, block::kPbm, block::kQbm, block::kTdOdo}) {
-      // Per-epoch blocks carry their epoch: "s_v@i".
-      if (b[k].name == n || b[k].name.rfind(n + "@", 0) == 0) calibration_blocks_.push_back(k);
+    const Quantity q = b[k].key.what;
+    if (q == Quantity::kSpeedScale || q == Quantity::kYawRateScale ||
+        q == Quantity::kOdometerLever || q == Quantity::kOdometerMount ||
+        q == Quantity::kOdometerDelay) {
+      calibration_blocks_.push_back(k);
     }
   }
   if (calibration_blocks_.empty()) {

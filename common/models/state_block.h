@@ -1,7 +1,7 @@
-// StateBlock: the name and kind of a state block a measurement model depends on.
+// StateBlock: the key and kind of a state block a measurement model depends on.
 #pragma once
 
-#include <string>
+#include "common/models/state_key.h"
 
 namespace giocal {
 
@@ -10,7 +10,7 @@ namespace giocal {
 enum class BlockKind { kVector, kRotation };
 
 struct StateBlock {
-  std::string name;  // e.g. "v_n_b"; two-state models suffix "@i" and "@j"
+  StateKey key;  // e.g. state::kV; two-state models use the copies Copy::kI and Copy::kJ
   BlockKind kind = BlockKind::kVector;
   int size = 3;  // tangent size; a Rotation has 3
 
@@ -18,24 +18,9 @@ struct StateBlock {
   int tangentSize() const { return size; }
 };
 
-/// The block names every estimator in giocal uses.
-namespace block {
-inline const std::string kP = "p_n_b";
-inline const std::string kV = "v_n_b";
-inline const std::string kQ = "q_n_b";
-inline const std::string kBa = "b_a";
-inline const std::string kBg = "b_g";
-inline const std::string kSv = "s_v";
-inline const std::string kSw = "s_w";
-inline const std::string kPbm = "p_b_m";
-inline const std::string kQbm = "q_b_m";
-inline const std::string kTdOdo = "t_d_odo";  // the odometer's delay against the IMU [s]
-inline std::string at(const std::string& name, char epoch) { return name + "@" + epoch; }
-}  // namespace block
-
-inline StateBlock vectorBlock(const std::string& name, int size = 3) {
-  return {name, BlockKind::kVector, size};
+inline StateBlock vectorBlock(const StateKey& key, int size = 3) {
+  return {key, BlockKind::kVector, size};
 }
-inline StateBlock rotationBlock(const std::string& name) { return {name, BlockKind::kRotation, 3}; }
+inline StateBlock rotationBlock(const StateKey& key) { return {key, BlockKind::kRotation, 3}; }
 
 }  // namespace giocal

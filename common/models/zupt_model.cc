@@ -5,7 +5,7 @@
 namespace giocal {
 
 const std::vector<StateBlock>& ZuptModel::blocks() const {
-  static const std::vector<StateBlock> kBlocks{vectorBlock(block::kV)};
+  static const std::vector<StateBlock> kBlocks{vectorBlock(state::kV)};
   return kBlocks;
 }
 

@@ -33,13 +33,13 @@ struct ImuCase {
   void fill(StateRegistry& s) const {
     Eigen::VectorXd q(4);
     quatToWxyz(x0.q_n_b, q.data());
-    s.add(vectorBlock("s_v", 1), Eigen::VectorXd::Constant(1, 0.02),
+    s.add(vectorBlock(state::kSv, 1), Eigen::VectorXd::Constant(1, 0.02),
           Eigen::MatrixXd::Constant(1, 1, 1e-4));
-    s.add(vectorBlock(nav_var::kP), x0.p_n_b, Eigen::Matrix3d::Zero());
-    s.add(rotationBlock(nav_var::kQ), q, Eigen::Matrix3d::Zero());
-    s.add(vectorBlock(nav_var::kV), x0.v_n_b, Eigen::Matrix3d::Zero());
-    s.add(vectorBlock(nav_var::kBa), x0.b_a, Eigen::Matrix3d::Zero());
-    s.add(vectorBlock(nav_var::kBg), x0.b_g, Eigen::Matrix3d::Zero());
+    s.add(vectorBlock(state::kP), x0.p_n_b, Eigen::Matrix3d::Zero());
+    s.add(rotationBlock(state::kQ), q, Eigen::Matrix3d::Zero());
+    s.add(vectorBlock(state::kV), x0.v_n_b, Eigen::Matrix3d::Zero());
+    s.add(vectorBlock(state::kBa), x0.b_a, Eigen::Matrix3d::Zero());
+    s.add(vectorBlock(state::kBg), x0.b_g, Eigen::Matrix3d::Zero());
   }
 };
 
@@ -84,15 +84,15 @@ TEST(ImuPropagation, CarriesCrossCovarianceWithOtherVariables) {
   StateRegistry s;
   su.fill(s);
   // Correlate the scale with the velocity, then propagate: Phi carries the correlation onward.
-  s.covariance()(0, s.offset(nav_var::kV)) = s.covariance()(s.offset(nav_var::kV), 0) = 1e-4;
-  s.covariance().block(s.offset(nav_var::kV), s.offset(nav_var::kV), 3, 3) =
+  s.covariance()(0, s.offset(state::kV)) = s.covariance()(s.offset(state::kV), 0) = 1e-4;
+  s.covariance().block(s.offset(state::kV), s.offset(state::kV), 3, 3) =
       Eigen::Matrix3d::Identity() * 1e-2;
   ImuPreintegration step(su.noise, su.frame.gravity_n(), su.frame.omega_ie_n(), su.x0.b_a,
                          su.x0.b_g);
   step.integrateSamples(su.samples, 0.0, 0.5);
   propagateImu(s, step);
   // A velocity error becomes a position error: cov(s_v, p) = cov(s_v, v) * T (first component).
-  EXPECT_NEAR(s.covariance()(0, s.offset(nav_var::kP)), 1e-4 * 0.5, 1e-6);
+  EXPECT_NEAR(s.covariance()(0, s.offset(state::kP)), 1e-4 * 0.5, 1e-6);
   const Eigen::MatrixXd P = s.covariance();
   EXPECT_LT((P - P.transpose()).norm(), 1e-15);
   EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(P).eigenvalues().minCoeff(), -1e-15);

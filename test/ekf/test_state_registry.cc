@@ -2,14 +2,16 @@
 
 #include <Eigen/LU>
 
+#include "common/math/kalman_update.h"
 #include "common/math/rotation.h"
 #include "common/math/so3.h"
 #include "common/models/zupt_model.h"
-#include "common/math/kalman_update.h"
 #include "ekf/state_registry.h"
 
 namespace giocal {
 namespace {
+
+const StateKey kN5 = ambiguityKey(SatId{GnssSystem::kGps, 5}, '1');
 
 Eigen::MatrixXd spd(int n, double scale) {
   Eigen::MatrixXd A = Eigen::MatrixXd::Random(n, n);
@@ -18,78 +20,80 @@ Eigen::MatrixXd spd(int n, double scale) {
 
 TEST(StateRegistry, AddRemoveKeepsTheCovarianceBlocks) {
   StateRegistry s;
-  s.add(vectorBlock("p_n_b"), Eigen::Vector3d(1, 2, 3), spd(3, 1.0));
+  s.add(vectorBlock(state::kP), Eigen::Vector3d(1, 2, 3), spd(3, 1.0));
   Eigen::VectorXd q(4);
   q << 1, 0, 0, 0;
-  s.add(rotationBlock("q_n_b"), q, spd(3, 0.01));
-  s.add(vectorBlock("N:G05:1", 1), Eigen::VectorXd::Constant(1, 12.3),
+  s.add(rotationBlock(state::kQ), q, spd(3, 0.01));
+  s.add(vectorBlock(kN5, 1), Eigen::VectorXd::Constant(1, 12.3),
         Eigen::MatrixXd::Constant(1, 1, 4.0));
-  s.add(vectorBlock("s_v", 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Constant(1, 1, 1e-4));
+  s.add(vectorBlock(state::kSv, 1), Eigen::VectorXd::Zero(1),
+        Eigen::MatrixXd::Constant(1, 1, 1e-4));
   EXPECT_EQ(s.dim(), 8);
-  EXPECT_EQ(s.offset("N:G05:1"), 6);
-  EXPECT_EQ(s.offset("s_v"), 7);
+  EXPECT_EQ(s.offset(kN5), 6);
+  EXPECT_EQ(s.offset(state::kSv), 7);
   // Correlate everything, then remove the ambiguity: the rest of the covariance is untouched.
   Eigen::MatrixXd P = spd(8, 0.1);
   s.covariance() = P;
-  s.remove("N:G05:1");
+  s.remove(kN5);
   EXPECT_EQ(s.dim(), 7);
-  EXPECT_EQ(s.offset("s_v"), 6);
-  EXPECT_FALSE(s.has("N:G05:1"));
+  EXPECT_EQ(s.offset(state::kSv), 6);
+  EXPECT_FALSE(s.has(kN5));
   std::vector<int> keep{0, 1, 2, 3, 4, 5, 7};
   for (int i = 0; i < 7; ++i)
     for (int j = 0; j < 7; ++j)
       EXPECT_EQ(s.covariance()(i, j),
                 P(keep[static_cast<size_t>(i)], keep[static_cast<size_t>(j)]));
-  EXPECT_EQ(s.names(), (std::vector<std::string>{"p_n_b", "q_n_b", "s_v"}));
+  EXPECT_EQ(s.keys(), (std::vector<StateKey>{state::kP, state::kQ, state::kSv}));
   EXPECT_THROW(
-      s.add(vectorBlock("s_v", 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Identity(1, 1)),
+      s.add(vectorBlock(state::kSv, 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Identity(1, 1)),
       std::invalid_argument);
-  EXPECT_THROW(s.offset("nothing"), std::out_of_range);
+  EXPECT_THROW(s.offset(state::kTdOdo), std::out_of_range);
 }
 
 TEST(StateRegistry, CorrectionUsesBoxPlus) {
   StateRegistry s;
-  s.add(vectorBlock("v_n_b"), Eigen::Vector3d(1, 0, 0), Eigen::Matrix3d::Identity());
+  s.add(vectorBlock(state::kV), Eigen::Vector3d(1, 0, 0), Eigen::Matrix3d::Identity());
   Eigen::VectorXd q(4);
   quatToWxyz(Quat(rotationFromRpy(Vec3(0.1, 0.2, 0.3))), q.data());
-  s.add(rotationBlock("q_b_m"), q, Eigen::Matrix3d::Identity());
+  s.add(rotationBlock(state::kQbm), q, Eigen::Matrix3d::Identity());
   Eigen::VectorXd dx(6);
   dx << 0.5, -0.5, 1.0, 0.01, -0.02, 0.03;
   s.correct(dx);
-  EXPECT_LT((s.value("v_n_b") - Eigen::Vector3d(1.5, -0.5, 1.0)).norm(), 1e-15);
+  EXPECT_LT((s.value(state::kV) - Eigen::Vector3d(1.5, -0.5, 1.0)).norm(), 1e-15);
   const Quat expected = boxPlus(quatFromWxyz(q.data()), Vec3(0.01, -0.02, 0.03));
-  EXPECT_LT(quatFromWxyz(s.value("q_b_m").data()).angularDistance(expected), 1e-14);
+  EXPECT_LT(quatFromWxyz(s.value(state::kQbm).data()).angularDistance(expected), 1e-14);
 }
 
 TEST(StateRegistry, ModelsBindByNameAndUpdate) {
   StateRegistry s;
-  s.add(vectorBlock("p_n_b"), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
-  s.add(vectorBlock("v_n_b"), Eigen::Vector3d(0.3, -0.2, 0.1), Eigen::Matrix3d::Identity() * 0.25);
+  s.add(vectorBlock(state::kP), Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity());
+  s.add(vectorBlock(state::kV), Eigen::Vector3d(0.3, -0.2, 0.1),
+        Eigen::Matrix3d::Identity() * 0.25);
   const ZuptModel zupt(0.01);
-  const MeasurementRows rows = linearize(zupt, s.bind({"v_n_b"}), s.dim());
+  const MeasurementRows rows = linearize(zupt, s.bind({state::kV}), s.dim());
   EXPECT_EQ(rows.H.block(0, 3, 3, 3), Eigen::Matrix3d::Identity());
   EXPECT_EQ(rows.H.block(0, 0, 3, 3), Eigen::Matrix3d::Zero());
   const UpdateResult up = kalmanUpdate(s.covariance(), rows, 1e9);
   ASSERT_TRUE(up.accepted);
   s.correct(up.dx);
   // The velocity moves to zero by the weight 0.25 / (0.25 + 1e-4); the position is untouched.
-  EXPECT_LT(s.value("v_n_b").norm(), 0.3 * 1e-4 / 0.25 * 2);
-  EXPECT_EQ(s.value("p_n_b"), Eigen::Vector3d::Zero());
-  EXPECT_LT(s.marginal("v_n_b")(0, 0), 1.01e-4);
-  EXPECT_THROW(s.bind({"b_g"}), std::out_of_range);
+  EXPECT_LT(s.value(state::kV).norm(), 0.3 * 1e-4 / 0.25 * 2);
+  EXPECT_EQ(s.value(state::kP), Eigen::Vector3d::Zero());
+  EXPECT_LT(s.marginal(state::kV)(0, 0), 1.01e-4);
+  EXPECT_THROW(s.bind({state::kBg}), std::out_of_range);
 }
 
 TEST(StateRegistry, CloneIsFullyCorrelatedAndMinusInvertsCorrect) {
   StateRegistry s;
-  s.add(vectorBlock("p_n_b"), Eigen::Vector3d(1, 2, 3), spd(3, 1.0));
+  s.add(vectorBlock(state::kP), Eigen::Vector3d(1, 2, 3), spd(3, 1.0));
   Eigen::VectorXd q(4);
   quatToWxyz(Quat(expSO3(Vec3(0.1, -0.2, 0.3))), q.data());
-  s.add(rotationBlock("q_n_b"), q, spd(3, 0.01));
+  s.add(rotationBlock(state::kQ), q, spd(3, 0.01));
   s.covariance() = spd(6, 0.1);
   const Eigen::MatrixXd P = s.covariance();
-  s.clone("q_n_b", "q_n_b@still");
+  s.clone(state::kQ, at(state::kQ, Copy::kStill));
   ASSERT_EQ(s.dim(), 9);
-  EXPECT_TRUE(s.value("q_n_b@still").isApprox(s.value("q_n_b")));
+  EXPECT_TRUE(s.value(at(state::kQ, Copy::kStill)).isApprox(s.value(state::kQ)));
   // The clone's rows and columns equal the original's: the difference has zero variance.
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(3, 9);
   D.middleCols(3, 3).setIdentity();

@@ -12,9 +12,13 @@
 namespace giocal {
 namespace {
 
-std::shared_ptr<PriorModel> prior(const std::string& name, const Eigen::Vector3d& mean,
-                                  double sigma) {
-  return std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(name)}, mean,
+// Test variables: x(k) and y(k), vectors of 3 at epoch k.
+StateKey x(int k) { return atEpoch(state::kP, k); }
+StateKey y(int k) { return atEpoch(state::kV, k); }
+const StateKey kLonely = state::kPbg;
+
+std::shared_ptr<PriorModel> prior(const StateKey& key, const Eigen::Vector3d& mean, double sigma) {
+  return std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(key)}, mean,
                                       Eigen::Matrix3d::Identity() * sigma * sigma);
 }
 
@@ -22,31 +26,31 @@ std::shared_ptr<PriorModel> prior(const std::string& name, const Eigen::Vector3d
 /// leave exactly the same estimate and covariance of x1 and x2.
 SlidingWindow chain() {
   SlidingWindow w;
-  for (const char* n : {"x0", "x1", "x2"}) w.addVariable(vectorBlock(n), Eigen::Vector3d::Zero());
-  w.addFactor({prior("x0", Eigen::Vector3d(1, 2, 3), 0.5), {"x0"}, 0.0, "p0"});
-  w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 0.3), {"x0", "x1"}, 0.0, "rw"});
-  w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 0.2), {"x1", "x2"}, 0.0, "rw"});
-  w.addFactor({prior("x2", Eigen::Vector3d(1.5, 1.0, 3.2), 0.4), {"x2"}, 0.0, "p2"});
+  for (int k = 0; k < 3; ++k) w.addVariable(vectorBlock(x(k)), Eigen::Vector3d::Zero());
+  w.addFactor({prior(x(0), Eigen::Vector3d(1, 2, 3), 0.5), {x(0)}, 0.0, "p0"});
+  w.addFactor({std::make_shared<RandomWalkModel>(state::kP, 3, 0.3), {x(0), x(1)}, 0.0, "rw"});
+  w.addFactor({std::make_shared<RandomWalkModel>(state::kP, 3, 0.2), {x(1), x(2)}, 0.0, "rw"});
+  w.addFactor({prior(x(2), Eigen::Vector3d(1.5, 1.0, 3.2), 0.4), {x(2)}, 0.0, "p2"});
   return w;
 }
 
 TEST(SlidingWindow, MarginalizationKeepsTheEstimateAndCovariance) {
   SlidingWindow full = chain();
   ASSERT_TRUE(full.solve(50, 1e-14).usable);
-  const Eigen::MatrixXd C_full = full.covariance({"x1", "x2"});
+  const Eigen::MatrixXd C_full = full.covariance({x(1), x(2)});
 
   SlidingWindow w = chain();
   w.solve(50, 1e-14);
-  w.marginalize({"x0"});
-  EXPECT_FALSE(w.has("x0"));
+  w.marginalize({x(0)});
+  EXPECT_FALSE(w.has(x(0)));
   ASSERT_EQ(w.factors().size(), 3u);  // marginal prior, rw x1-x2, prior x2
   // Move the estimate away and solve again: the marginal prior brings it back.
-  w.value("x1") += Eigen::Vector3d(0.3, -0.2, 0.1);
-  w.value("x2") -= Eigen::Vector3d(0.1, 0.1, 0.1);
+  w.value(x(1)) += Eigen::Vector3d(0.3, -0.2, 0.1);
+  w.value(x(2)) -= Eigen::Vector3d(0.1, 0.1, 0.1);
   ASSERT_TRUE(w.solve(50, 1e-14).usable);
-  EXPECT_LT((w.value("x1") - full.value("x1")).norm(), 1e-6);  // solver precision
-  EXPECT_LT((w.value("x2") - full.value("x2")).norm(), 1e-6);
-  EXPECT_LT((w.covariance({"x1", "x2"}) - C_full).norm(), 1e-10);
+  EXPECT_LT((w.value(x(1)) - full.value(x(1))).norm(), 1e-6);  // solver precision
+  EXPECT_LT((w.value(x(2)) - full.value(x(2))).norm(), 1e-6);
+  EXPECT_LT((w.covariance({x(1), x(2)}) - C_full).norm(), 1e-10);
 }
 
 TEST(SlidingWindow, CovarianceIsTheInverseHessian) {
@@ -57,7 +61,7 @@ TEST(SlidingWindow, CovarianceIsTheInverseHessian) {
   Eigen::Matrix3d H;
   H << p0 + r01, -r01, 0, -r01, r01 + r12, -r12, 0, -r12, r12 + p2;
   const Eigen::Matrix3d P = H.inverse();
-  const Eigen::MatrixXd C = w.covariance({"x2", "x0", "x1"});  // any order of the names
+  const Eigen::MatrixXd C = w.covariance({x(2), x(0), x(1)});  // any order of the names
   const int at[3] = {1, 2, 0};                                 // x0, x1, x2 in C
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -75,10 +79,10 @@ TEST(SlidingWindow, CovarianceOfAnUnobservedDirectionIsFinite) {
   // Two variables tied only to each other: their common offset is unobserved, so the Hessian is
   // singular. The covariance must still be finite, and it keeps the observed difference's sigma.
   SlidingWindow w;
-  w.addVariable(vectorBlock("a"), Eigen::Vector3d::Zero());
-  w.addVariable(vectorBlock("b"), Eigen::Vector3d::Zero());
-  w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 0.3), {"a", "b"}, 0.0, "rw"});
-  const Eigen::MatrixXd C = w.covariance({"a", "b"});
+  w.addVariable(vectorBlock(x(0)), Eigen::Vector3d::Zero());
+  w.addVariable(vectorBlock(x(1)), Eigen::Vector3d::Zero());
+  w.addFactor({std::make_shared<RandomWalkModel>(state::kP, 3, 0.3), {x(0), x(1)}, 0.0, "rw"});
+  const Eigen::MatrixXd C = w.covariance({x(0), x(1)});
   EXPECT_TRUE(C.allFinite());
   Eigen::MatrixXd D(3, 6);
   D << -Eigen::Matrix3d::Identity(), Eigen::Matrix3d::Identity();
@@ -94,34 +98,31 @@ TEST(SlidingWindow, AStiffChainMovesInOneSolve) {
   // which froze the factor graph's s_w near the initial guess (docs/results.md).
   SlidingWindow w;
   for (int k = 0; k < 5; ++k) {
-    const std::string x = "x" + std::to_string(k), y = "y" + std::to_string(k);
-    w.addVariable(vectorBlock(x), Eigen::Vector3d::Zero());
-    w.addVariable(vectorBlock(y), Eigen::Vector3d::Zero());
-    w.addFactor({prior(x, Eigen::Vector3d::Ones(), 0.1), {x}, 0.0, "weak"});
-    w.addFactor({prior(y, Eigen::Vector3d::Zero(), 1e-3), {y}, 0.0, "precise"});
+    w.addVariable(vectorBlock(x(k)), Eigen::Vector3d::Zero());
+    w.addVariable(vectorBlock(y(k)), Eigen::Vector3d::Zero());
+    w.addFactor({prior(x(k), Eigen::Vector3d::Ones(), 0.1), {x(k)}, 0.0, "weak"});
+    w.addFactor({prior(y(k), Eigen::Vector3d::Zero(), 1e-3), {y(k)}, 0.0, "precise"});
     if (k > 0) {
-      w.addFactor({std::make_shared<RandomWalkModel>("x", 3, 1e-5),
-                   {"x" + std::to_string(k - 1), x},
-                   0.0,
-                   "rw"});
+      w.addFactor(
+          {std::make_shared<RandomWalkModel>(state::kP, 3, 1e-5), {x(k - 1), x(k)}, 0.0, "rw"});
     }
   }
   ASSERT_TRUE(w.solve(10).usable);
   for (int k = 0; k < 5; ++k) {
-    EXPECT_LT((w.value("x" + std::to_string(k)) - Eigen::Vector3d::Ones()).norm(), 1e-3) << k;
+    EXPECT_LT((w.value(x(k)) - Eigen::Vector3d::Ones()).norm(), 1e-3) << k;
   }
 }
 
 TEST(SlidingWindow, AVariableThatLosesAllItsFactorsIsNoFailure) {
   SlidingWindow w = chain();
-  w.addVariable(vectorBlock("lonely"), Eigen::Vector3d(5, 5, 5));
-  w.addFactor({prior("lonely", Eigen::Vector3d(5, 5, 5), 1.0), {"lonely"}, 0.0, "only"});
+  w.addVariable(vectorBlock(kLonely), Eigen::Vector3d(5, 5, 5));
+  w.addFactor({prior(kLonely, Eigen::Vector3d(5, 5, 5), 1.0), {kLonely}, 0.0, "only"});
   EXPECT_EQ(w.removeFactors("only"), 1);
   EXPECT_TRUE(w.solve(10).usable);  // not in the problem, no error
-  EXPECT_EQ(w.value("lonely"), Eigen::Vector3d(5, 5, 5));
+  EXPECT_EQ(w.value(kLonely), Eigen::Vector3d(5, 5, 5));
   // Marginalizing a variable without factors just drops it.
-  w.marginalize({"lonely"});
-  EXPECT_FALSE(w.has("lonely"));
+  w.marginalize({kLonely});
+  EXPECT_FALSE(w.has(kLonely));
   EXPECT_TRUE(w.solve(10).usable);
 }
 
@@ -144,7 +145,7 @@ class PointModel : public MeasurementModel {
   }
 
  private:
-  std::vector<StateBlock> blocks_{rotationBlock("q"), vectorBlock("p")};
+  std::vector<StateBlock> blocks_{rotationBlock(state::kQ), vectorBlock(state::kP)};
   Eigen::Vector3d a_, y_;
   double sigma_;
 };
@@ -156,18 +157,19 @@ SlidingWindow bodyWindow(WindowSolver solver) {
   w.setSolver(solver);
   Eigen::Vector4d q0;
   quatToWxyz(Quat::Identity(), q0.data());
-  w.addVariable(rotationBlock("q"), q0);
-  w.addVariable(vectorBlock("p"), Eigen::Vector3d(0.0, 0.0, 3.0));
-  w.holdComponents("p", {2});
+  w.addVariable(rotationBlock(state::kQ), q0);
+  w.addVariable(vectorBlock(state::kP), Eigen::Vector3d(0.0, 0.0, 3.0));
+  w.holdComponents(state::kP, {2});
   const Eigen::Matrix3d R = rotationFromRpy(Eigen::Vector3d(0.4, -0.3, 1.2));
   const Eigen::Vector3d t(1, 2, 3);
   const Eigen::Vector3d a[6] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {-1, 0, 2}, {0, -2, 1}};
   for (int k = 0; k < 6; ++k) {
     const Eigen::Vector3d y =
         R * a[k] + t + (k == 5 ? Eigen::Vector3d(0.5, 0, 0) : Eigen::Vector3d::Zero());
-    w.addFactor({std::make_shared<PointModel>(a[k], y, 0.01), {"q", "p"}, 3.0, "point"});
+    w.addFactor(
+        {std::make_shared<PointModel>(a[k], y, 0.01), {state::kQ, state::kP}, 3.0, "point"});
   }
-  w.addFactor({prior("p", Eigen::Vector3d(1, 2, 3), 1.0), {"p"}, 0.0, "prior"});
+  w.addFactor({prior(state::kP, Eigen::Vector3d(1, 2, 3), 1.0), {state::kP}, 0.0, "prior"});
   return w;
 }
 
@@ -181,23 +183,24 @@ TEST(SlidingWindow, OwnGaussNewtonAgreesWithCeres) {
   ASSERT_TRUE(a.usable);
   ASSERT_TRUE(b.usable);
   EXPECT_NEAR(a.final_cost, b.final_cost, 1e-9 * b.final_cost);
-  EXPECT_EQ(own.value("p")[2], 3.0);  // held
-  EXPECT_EQ(ceres.value("p")[2], 3.0);
-  EXPECT_LT((own.value("p") - ceres.value("p")).norm(), 1e-9);
-  EXPECT_LT(
-      boxMinus(quatFromWxyz(own.value("q").data()), quatFromWxyz(ceres.value("q").data())).norm(),
-      1e-9);
+  EXPECT_EQ(own.value(state::kP)[2], 3.0);  // held
+  EXPECT_EQ(ceres.value(state::kP)[2], 3.0);
+  EXPECT_LT((own.value(state::kP) - ceres.value(state::kP)).norm(), 1e-9);
+  EXPECT_LT(boxMinus(quatFromWxyz(own.value(state::kQ).data()),
+                     quatFromWxyz(ceres.value(state::kQ).data()))
+                .norm(),
+            1e-9);
   // Near the truth despite the outlier (without the Huber loss it pulls p.x 0.11 m off).
-  EXPECT_LT(std::abs(own.value("p")[0] - 1.0), 0.02);
-  EXPECT_NEAR(own.value("q").norm(), 1.0, 1e-12);
+  EXPECT_LT(std::abs(own.value(state::kP)[0] - 1.0), 0.02);
+  EXPECT_NEAR(own.value(state::kQ).norm(), 1.0, 1e-12);
   // The covariance after the own solve reuses its last factorization: the same as one made
   // afresh at the solution.
-  const Eigen::MatrixXd C = own.covariance({"q", "p"});
+  const Eigen::MatrixXd C = own.covariance({state::kQ, state::kP});
   SlidingWindow fresh = bodyWindow(WindowSolver::kGaussNewton);
-  fresh.value("q") = own.value("q");
-  fresh.value("p") = own.value("p");
-  EXPECT_LT((fresh.covariance({"q", "p"}) - C).norm(), 1e-12 * C.norm());
-  EXPECT_LT((ceres.covariance({"q", "p"}) - C).norm(), 1e-6 * C.norm());
+  fresh.value(state::kQ) = own.value(state::kQ);
+  fresh.value(state::kP) = own.value(state::kP);
+  EXPECT_LT((fresh.covariance({state::kQ, state::kP}) - C).norm(), 1e-12 * C.norm());
+  EXPECT_LT((ceres.covariance({state::kQ, state::kP}) - C).norm(), 1e-6 * C.norm());
 }
 
 }  // namespace

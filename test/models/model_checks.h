@@ -56,8 +56,8 @@ inline void expectJacobiansMatchNumeric(const MeasurementModel& model,
   ASSERT_EQ(J.size(), model.blocks().size());
   for (size_t k = 0; k < model.blocks().size(); ++k) {
     const StateBlock& b = model.blocks()[k];
-    ASSERT_EQ(J[k].rows(), model.residualSize()) << b.name;
-    ASSERT_EQ(J[k].cols(), b.tangentSize()) << b.name;
+    ASSERT_EQ(J[k].rows(), model.residualSize()) << b.key.str();
+    ASSERT_EQ(J[k].cols(), b.tangentSize()) << b.key.str();
     const auto f = [&](const Eigen::VectorXd& d) -> Eigen::VectorXd {
       std::vector<Eigen::VectorXd> v = values;
       v[k] = perturbBlock(b, values[k], d);
@@ -66,7 +66,7 @@ inline void expectJacobiansMatchNumeric(const MeasurementModel& model,
       return out;
     };
     EXPECT_LT(relativeDifference(J[k], numericJacobian(f, b.tangentSize(), step)), tol)
-        << model.name() << " block " << b.name;
+        << model.name() << " block " << b.key.str();
   }
 }
 

@@ -10,11 +10,13 @@
 #include <random>
 
 #include "common/geodesy/wgs84.h"
+#include "common/math/kalman_update.h"
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/models/doppler_model.h"
 #include "common/models/heading_change_model.h"
 #include "common/models/imu_preintegration_model.h"
+#include "common/models/measurement_rows.h"
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
@@ -22,8 +24,6 @@
 #include "common/models/prior_model.h"
 #include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
-#include "common/math/kalman_update.h"
-#include "common/models/measurement_rows.h"
 #include "fgo/model_cost_function.h"
 #include "fgo/right_quaternion_manifold.h"
 #include "model_checks.h"
@@ -47,7 +47,7 @@ TEST(MeasurementModels, IteratedFilterAndCeresReachTheSameEstimate) {
     offsets.push_back(n);
     n += b.tangentSize();
     Eigen::VectorXd v = test::randomBlockValue(b, b.size == 1 ? 0.02 : 0.3, gen);
-    if (b.name == block::kV) v = Vec3(0.2, 1.2, 0.0);
+    if (b.key == state::kV) v = Vec3(0.2, 1.2, 0.0);
     x0.push_back(v);
     mean_ambient.conservativeResize(mean_ambient.size() + v.size());
     mean_ambient.tail(v.size()) = v;
@@ -126,7 +126,7 @@ TEST(MeasurementModels, IteratedFilterAndCeresReachTheSameEstimate) {
         b.kind == BlockKind::kRotation
             ? Eigen::VectorXd(boxMinus(quatFromWxyz(x[k].data()), quatFromWxyz(y[k].data())))
             : Eigen::VectorXd(x[k] - y[k]);
-    EXPECT_LT(diff.norm(), 1e-8) << b.name;
+    EXPECT_LT(diff.norm(), 1e-8) << b.key.str();
     moved += (b.kind == BlockKind::kRotation ? 0.0 : (x[k] - x0[k]).norm());
   }
   EXPECT_GT(moved, 1e-3) << "the measurement must actually move the estimate";

@@ -7,12 +7,14 @@
 #include <random>
 
 #include "common/geodesy/wgs84.h"
+#include "common/math/kalman_update.h"
 #include "common/math/whitening.h"
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/models/doppler_model.h"
 #include "common/models/heading_change_model.h"
 #include "common/models/imu_preintegration_model.h"
+#include "common/models/measurement_rows.h"
 #include "common/models/nhc_model.h"
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
@@ -20,8 +22,6 @@
 #include "common/models/prior_model.h"
 #include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
-#include "common/math/kalman_update.h"
-#include "common/models/measurement_rows.h"
 #include "fgo/model_cost_function.h"
 #include "fgo/right_quaternion_manifold.h"
 #include "model_checks.h"
@@ -36,9 +36,10 @@ std::vector<Eigen::VectorXd> randomValues(const MeasurementModel& m) {
   for (const auto& b : m.blocks()) {
     // Scale factors stay small, biases small, everything else of ground-robot magnitude.
     double scale = 1.0;
-    if (b.name.rfind("s_", 0) == 0) scale = 0.05;
-    if (b.name.rfind("b_", 0) == 0) scale = 0.02;
-    if (b.name == block::kTdOdo) scale = 0.05;
+    const Quantity q = b.key.what;
+    if (q == Quantity::kSpeedScale || q == Quantity::kYawRateScale) scale = 0.05;
+    if (q == Quantity::kAccelBias || q == Quantity::kGyroBias) scale = 0.02;
+    if (q == Quantity::kOdometerDelay) scale = 0.05;
     values.push_back(test::randomBlockValue(b, scale, rng));
   }
   return values;
@@ -59,8 +60,8 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
   rates.w_b_i = Vec3(0.1, 0.2, -0.5);
   rates.v_n_j = Vec3(-0.7, 1.2, 0.0);
   rates.w_b_j = Vec3(-0.1, 0.05, 0.4);
-  const std::vector<StateBlock> prior_blocks{vectorBlock(block::kSv, 1), vectorBlock(block::kPbm),
-                                             rotationBlock(block::kQbm)};
+  const std::vector<StateBlock> prior_blocks{vectorBlock(state::kSv, 1), vectorBlock(state::kPbm),
+                                             rotationBlock(state::kQbm)};
   Eigen::VectorXd mean(8);
   mean << 0.01, 0.1, 0.2, 0.3, 1, 0, 0, 0;
   // Double differences: five satellites 20,000 km away above the horizon, a base 4 km off.
@@ -103,8 +104,8 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
     o.variance = 0.09;
     dop.push_back(o);
   }
-  const std::vector<DdAmbiguityFix> fixes{{"N:G03:1", "N:G05:1", 12.0},
-                                          {"N:G04:1", "N:G05:1", -3.0}};
+  const auto n = [](int prn) { return ambiguityKey(SatId{GnssSystem::kGps, prn}, '1'); };
+  const std::vector<DdAmbiguityFix> fixes{{n(3), n(5), 12.0}, {n(4), n(5), -3.0}};
   return {std::make_shared<DdGnssModel>(frame, geo, dd, var),
           std::make_shared<DopplerModel>(frame.R_e_n(), Vec3(0.1, -0.2, 0.5), dop),
           std::make_shared<HeadingChangeModel>(0.001),
@@ -154,8 +155,8 @@ bool hasBlock(const MeasurementModel& m, const std::function<bool(const StateBlo
 TEST(PlanarMotionProjection, ResidualUnchangedAndBlindAlongTheVehicleVertical) {
   for (const auto& model : allModels()) {
     const auto& b = model->blocks();
-    const bool has = hasBlock(*model, [](const StateBlock& x) { return x.name == block::kPbm; }) &&
-                     hasBlock(*model, [](const StateBlock& x) { return x.name == block::kQbm; });
+    const bool has = hasBlock(*model, [](const StateBlock& x) { return x.key == state::kPbm; }) &&
+                     hasBlock(*model, [](const StateBlock& x) { return x.key == state::kQbm; });
     if (!has) {
       EXPECT_THROW(PlanarMotionProjection{model}, std::invalid_argument) << model->name();
       continue;
@@ -163,10 +164,10 @@ TEST(PlanarMotionProjection, ResidualUnchangedAndBlindAlongTheVehicleVertical) {
     const std::vector<Eigen::VectorXd> values = randomValues(*model);
     const auto [J0, J1] = jacobiansWithAndWithout(PlanarMotionProjection(model), values);
     for (size_t k = 0; k < b.size(); ++k) {
-      if (b[k].name == block::kQbm) {
+      if (b[k].key == state::kQbm) {
         const Vec3 u = quatFromWxyz(values[k].data()) * Vec3::UnitZ();
         for (size_t p = 0; p < b.size(); ++p) {
-          if (b[p].name != block::kPbm) continue;
+          if (b[p].key != state::kPbm) continue;
           EXPECT_LT((J1[p] * u).norm(), 1e-12) << model->name();
           // Moves across the vertical keep the model's own derivative.
           const Vec3 across = u.cross(Vec3::UnitX()).normalized();
@@ -181,9 +182,9 @@ TEST(StandstillProjection, ResidualUnchangedAndBlindToTheCalibration) {
   for (const auto& model : allModels()) {
     const auto& b = model->blocks();
     auto isCalibration = [](const StateBlock& x) {
-      for (const std::string& n :
-           {block::kSv, block::kSw, block::kPbm, block::kQbm, block::kTdOdo}) {
-        if (x.name == n || x.name.rfind(n + "@", 0) == 0) return true;
+      // Any copy of a calibration state ("s_v@i" in a two-state model).
+      for (const StateKey& n : {state::kSv, state::kSw, state::kPbm, state::kQbm, state::kTdOdo}) {
+        if (x.key.what == n.what) return true;
       }
       return false;
     };
@@ -195,9 +196,9 @@ TEST(StandstillProjection, ResidualUnchangedAndBlindToTheCalibration) {
     const auto [J0, J1] = jacobiansWithAndWithout(StandstillProjection(model), values);
     for (size_t k = 0; k < b.size(); ++k) {
       if (isCalibration(b[k])) {
-        EXPECT_EQ(J1[k].norm(), 0.0) << model->name() << " " << b[k].name;
+        EXPECT_EQ(J1[k].norm(), 0.0) << model->name() << " " << b[k].key.str();
       } else {
-        EXPECT_EQ(J1[k], J0[k]) << model->name() << " " << b[k].name;
+        EXPECT_EQ(J1[k], J0[k]) << model->name() << " " << b[k].key.str();
       }
     }
   }
@@ -240,7 +241,8 @@ TEST(StandstillProjection, IsTheOdometerJacobianAtTheTruthOfAStillVehicle) {
   std::vector<Eigen::MatrixXd> J;
   model.evaluate(test::pointers(values).data(), r, &J);
   EXPECT_LT(r.norm(), 1e-12);
-  for (size_t k = 4; k < J.size(); ++k) EXPECT_LT(J[k].norm(), 1e-12) << model.blocks()[k].name;
+  for (size_t k = 4; k < J.size(); ++k)
+    EXPECT_LT(J[k].norm(), 1e-12) << model.blocks()[k].key.str();
 }
 
 TEST(MeasurementModels, FilterRowsAreTheModelJacobiansAtTheStateOffsets) {
@@ -316,7 +318,7 @@ TEST(MeasurementModels, CeresCostIsTheWhitenedModelWithTangentJacobians) {
       EXPECT_LT(test::relativeDifference(
                     tangent, test::numericJacobian(f, b.tangentSize(), gnss ? 1e-3 : 1e-6)),
                 gnss ? 1e-5 : 1e-6)
-          << model->name() << " " << b.name;
+          << model->name() << " " << b.key.str();
     }
   }
 }
