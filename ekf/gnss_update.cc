@@ -36,9 +36,8 @@ GnssUpdate::GnssUpdate(const BroadcastOrbits& orbits, const Eigen::Vector3d& bas
 void GnssUpdate::resetAmbiguity(StateRegistry& s, const StateKey& key, double value,
                                 double lambda) {
   if (s.has(key)) s.remove(key);
-  // Start from code: 10 m of uncertainty covers code noise and multipath.
   s.add(vectorBlock(key, 1), Eigen::VectorXd::Constant(1, value),
-        Eigen::MatrixXd::Constant(1, 1, std::pow(10.0 / lambda, 2)));
+        Eigen::MatrixXd::Constant(1, 1, ambiguityStartVariance(lambda)));
   ambiguities_.insert(key);
 }
 

@@ -27,11 +27,10 @@ std::optional<StateKey> FactorGraphCore::ambiguityVar(const SatId& sat, char ban
 void FactorGraphCore::newAmbiguity(const SatId& sat, char band, double value, double lambda) {
   const StateKey name = ambiguityKey(sat, band, ++amb_version_[{sat, band}]);
   w_.addVariable(vectorBlock(name, 1), Eigen::VectorXd::Constant(1, value));
-  // Start from code, as the filter does: 10 m of uncertainty.
   w_.addFactor(
-      {std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(name, 1)},
-                                    Eigen::VectorXd::Constant(1, value),
-                                    Eigen::MatrixXd::Constant(1, 1, std::pow(10.0 / lambda, 2))),
+      {std::make_shared<PriorModel>(
+           std::vector<StateBlock>{vectorBlock(name, 1)}, Eigen::VectorXd::Constant(1, value),
+           Eigen::MatrixXd::Constant(1, 1, ambiguityStartVariance(lambda))),
        {name},
        0.0,
        "ambiguity_prior"});

@@ -36,6 +36,10 @@ struct SdAmbiguity {
   bool slipped = false;
 };
 
+/// Variance [cycles^2] of an SD ambiguity started (or restarted after a slip) from code: 10 m
+/// covers code noise and multipath. The prior of every estimator's ambiguity states.
+inline double ambiguityStartVariance(double lambda) { return (10.0 / lambda) * (10.0 / lambda); }
+
 struct DdEpoch {
   std::vector<SdGeometry> geometry;
   std::vector<DdObservation> obs;  // phase and code rows

@@ -136,7 +136,7 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   for (const SdAmbiguity& a : ep.ambiguities) {
     const AmbKey key{a.sat, a.band};
     if (a.slipped) removeAmbiguity(key);
-    if (ambiguityIndex(key) < 0) addAmbiguity(key, a.code_value, std::pow(10.0 / a.lambda, 2));
+    if (ambiguityIndex(key) < 0) addAmbiguity(key, a.code_value, ambiguityStartVariance(a.lambda));
     last_seen_[key] = rover.t;
   }
   for (const AmbKey& k : std::vector<AmbKey>(amb_keys_)) {
@@ -207,7 +207,7 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
         const int ia = ambiguityIndex({o.sat, o.band});
         P_.row(ia).setZero();
         P_.col(ia).setZero();
-        P_(ia, ia) = std::pow(10.0 / o.lambda, 2);
+        P_(ia, ia) = ambiguityStartVariance(o.lambda);
       }
       continue;
     }
