@@ -78,6 +78,7 @@ void SlidingWindow::addFactor(Factor f) {
     f.sqrt_info =
         std::make_shared<const Eigen::MatrixXd>(whitener(f.model->covariance(), f.model->name()));
   }
+  f.sqrt_info_diagonal = f.sqrt_info->isDiagonal(0.0);
   factors_.push_back(std::move(f));
 }
 
@@ -196,6 +197,7 @@ void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& facto
   std::vector<const double*> params;
   Eigen::VectorXd r;
   std::vector<Eigen::MatrixXd> J;
+  Eigen::MatrixXd Hf;
   for (size_t n = 0; n < factors.size(); ++n) {
     const FactorLayout& l = factors[n];
     const Factor* f = l.factor;
@@ -208,9 +210,17 @@ void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& facto
     for (size_t i = 0; i < l.segments.size(); ++i) {
       Jf.middleCols(l.segments[i].local, l.segments[i].size) = J[l.blocks[i]];
     }
+    // S is lower triangular (often diagonal): half the products of a dense one, or none.
     const Eigen::MatrixXd& S = *f->sqrt_info;
-    Eigen::MatrixXd Jw = S * Jf;
-    Eigen::VectorXd rw = S * r;
+    Eigen::MatrixXd Jw;
+    Eigen::VectorXd rw;
+    if (f->sqrt_info_diagonal) {
+      Jw = S.diagonal().asDiagonal() * Jf;
+      rw = S.diagonal().cwiseProduct(r);
+    } else {
+      Jw.noalias() = S.triangularView<Eigen::Lower>() * Jf;
+      rw.noalias() = S.triangularView<Eigen::Lower>() * r;
+    }
     const double s2 = rw.squaredNorm();
     if (robust && f->huber > 0.0 && s2 > f->huber * f->huber) {
       const double weight = std::sqrt(f->huber / std::sqrt(s2));
@@ -225,7 +235,9 @@ void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& facto
       for (const Segment& seg : l.segments)
         b->segment(seg.global, seg.size) += g.segment(seg.local, seg.size);
     }
-    visit(n, l, Jw.transpose() * Jw);
+    Hf.setZero(l.cols, l.cols);
+    Hf.selfadjointView<Eigen::Lower>().rankUpdate(Jw.transpose());
+    visit(n, l, Hf);
   }
 }
 
@@ -238,7 +250,8 @@ void SlidingWindow::linearize(const std::vector<StateKey>& order,
   b = Eigen::VectorXd::Zero(n);
   forEachWhitenedFactor(
       layouts(offset, factors),
-      [&](size_t, const FactorLayout& l, const Eigen::MatrixXd& Hf) {
+      [&](size_t, const FactorLayout& l, const Eigen::MatrixXd& Hf_lower) {
+        const Eigen::MatrixXd Hf = Hf_lower.selfadjointView<Eigen::Lower>();
         for (const Segment& u : l.segments) {
           for (const Segment& v : l.segments) {
             H.block(u.global, v.global, u.size, v.size) +=

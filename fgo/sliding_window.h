@@ -21,8 +21,10 @@ struct Factor {
   std::vector<StateKey> vars;
   double huber = 0.0;  // > 0: Huber loss with this threshold on the whitened residual
   std::string tag;     // what it is, for finding it again ("dd_phase#12", "fix", ...)
-  // The model's whitener (its covariance is fixed): set when the factor enters a window.
+  // The model's whitener (its covariance is fixed), lower triangular: set when the factor enters
+  // a window, with whether it is diagonal (then applied as a row scaling).
   std::shared_ptr<const Eigen::MatrixXd> sqrt_info = nullptr;
+  bool sqrt_info_diagonal = false;
 };
 
 /// How the window is solved. Both minimize the same robust cost; Gauss-Newton forms the sparse
@@ -94,7 +96,7 @@ class SlidingWindow {
     std::vector<size_t> blocks;
     int cols = 0;
   };
-  /// Receives factor k's whitened J^T J over its window variables.
+  /// Receives factor k's whitened J^T J over its window variables (its lower triangle only).
   using FactorVisitor =
       std::function<void(size_t k, const FactorLayout& layout, const Eigen::MatrixXd& Hf)>;
   /// Tangent offset of each of `order`'s variables; `size` gets the total.

@@ -212,7 +212,10 @@ std::shared_ptr<SlidingWindow::Linearization> SlidingWindow::linearizeWindow() c
       plan_->layouts,
       [&](size_t k, const FactorLayout& l, const Eigen::MatrixXd& Hf) {
         const int* d = plan_->dest[k].data();
-        forEachLowerEntry(l.segments, [&](int, int, int i, int j) { value[*d++] += Hf(i, j); });
+        // Hf holds the lower triangle of the factor's own columns.
+        forEachLowerEntry(l.segments, [&](int, int, int i, int j) {
+          value[*d++] += i >= j ? Hf(i, j) : Hf(j, i);
+        });
       },
       &lin->b, true, &lin->cost);
   if (!lin->b.allFinite()) lin->cost = std::numeric_limits<double>::infinity();

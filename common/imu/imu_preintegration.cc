@@ -70,8 +70,7 @@ void ImuPreintegration::integrate(double dt, const Eigen::Vector3d& gyro,
       !(extra_accel_density >= 0.0)) {
     throw std::invalid_argument("ImuPreintegration: step needs dt > 0 and finite samples");
   }
-  steps_.push_back({dt, gyro, acc, extra_gyro_density, extra_accel_density});
-  addStep(steps_.back());
+  addStep({dt, gyro, acc, extra_gyro_density, extra_accel_density});
 }
 
 void ImuPreintegration::addStep(const Step& s) {
@@ -176,13 +175,6 @@ void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, 
                 bridge.angular_accel * grow, bridge.jerk * grow);
     }
   }
-}
-
-void ImuPreintegration::repropagate(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g) {
-  b_a_lin_ = b_a;
-  b_g_lin_ = b_g;
-  reset();
-  for (const Step& s : steps_) addStep(s);
 }
 
 Mat3 ImuPreintegration::correctedDeltaR(const Eigen::Vector3d& b_g) const {

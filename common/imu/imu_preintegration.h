@@ -56,9 +56,6 @@ class ImuPreintegration {
   void integrateSamples(const std::vector<ImuSample>& samples, double t0, double t1,
                         const ImuBridgeModel& bridge = {});
 
-  /// Integrates again from the stored steps with new bias linearization points.
-  void repropagate(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g);
-
   double dt() const { return dt_sum_; }
   const Mat3& deltaR() const { return dR_; }
   const Vec3& deltaV() const { return dv_; }
@@ -93,7 +90,6 @@ class ImuPreintegration {
   ImuNoise noise_;
   Eigen::Vector3d g_n_, w_ie_n_;
   Eigen::Vector3d b_a_lin_, b_g_lin_;
-  std::vector<Step> steps_;
 
   double dt_sum_ = 0.0;
   Mat3 dR_;
