@@ -27,7 +27,7 @@ namespace {
 constexpr double kScaleRandomWalkFloor = 1e-6;  // [1/sqrt(s)]
 }  // namespace
 
-using fgo_var::tagged;
+using fgo_tag::tagged;
 using state::kPbg;
 using state::kPbm;
 using state::kQbm;

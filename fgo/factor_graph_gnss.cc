@@ -15,7 +15,7 @@
 
 namespace giocal {
 
-using fgo_var::tagged;
+using fgo_tag::tagged;
 using state::kPbg;
 
 std::optional<StateKey> FactorGraphCore::ambiguityVar(const SatId& sat, char band) const {

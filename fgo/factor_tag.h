@@ -4,10 +4,10 @@
 
 #include <string>
 
-namespace giocal::fgo_var {
+namespace giocal::fgo_tag {
 
 inline std::string tagged(const char* what, int k) {
   return std::string(what) + "#" + std::to_string(k);
 }
 
-}  // namespace giocal::fgo_var
+}  // namespace giocal::fgo_tag
