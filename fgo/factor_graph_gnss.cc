@@ -45,7 +45,7 @@ std::vector<StateKey> FactorGraphCore::phaseVars(const DdGnssModel& model,
   for (const DdObservation& o : rows) {
     for (const SatId& sat : {o.sat, o.ref}) {
       const int b = model.ambiguityBlock(sat, o.band);
-      if (b >= 0) vars[static_cast<size_t>(b)] = *ambiguityVar(sat, o.band);
+      if (b >= 0) vars[static_cast<size_t>(b)] = ambiguityVar(sat, o.band).value();
     }
   }
   return vars;
@@ -199,8 +199,8 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
   std::vector<std::pair<int, int>> pairs;
   std::vector<double> el;
   for (const DdObservation& o : e.phase_rows) {
-    pairs.push_back({static_cast<int>(index(*ambiguityVar(o.sat, o.band))),
-                     static_cast<int>(index(*ambiguityVar(o.ref, o.band)))});
+    pairs.push_back({static_cast<int>(index(ambiguityVar(o.sat, o.band).value())),
+                     static_cast<int>(index(ambiguityVar(o.ref, o.band).value()))});
     el.push_back(e.dd.geometry[static_cast<size_t>(o.sat_index)].el);
   }
   // Float DD ambiguities and their covariance from the window.
