@@ -50,6 +50,7 @@ FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const Broadca
       }()),
       held_(heldStates(o, sensors.description)) {
   w_.setSolver(fo.solver);
+  w_.setStepTolerance(fo.stop_step_sigma);
   start(init);
 }
 

@@ -13,6 +13,7 @@ FgoOptions readFgoOptions(const YamlFields& y) {
   FgoOptions o;
   o.window = static_cast<int>(y.numberOr("fgo.window", o.window, 2, 1000));
   o.max_iterations = static_cast<int>(y.numberOr("fgo.max_iterations", o.max_iterations, 1, 1000));
+  o.stop_step_sigma = y.numberOr("fgo.stop_step_sigma", o.stop_step_sigma, 0.0, 10.0);
   const std::string solver = y.textOr("fgo.solver", "gauss_newton");
   if (solver == "ceres") {
     o.solver = WindowSolver::kCeres;

@@ -12,7 +12,8 @@ class YamlFields;
 
 struct FgoOptions {
   int window = 30;  // GNSS epochs kept in the window (chosen by measurement, docs/results.md)
-  int max_iterations = 10;                           // solver iterations per solve
+  int max_iterations = 10;       // solver iterations per solve
+  double stop_step_sigma = 0.1;  // Gauss-Newton ends when the step left is below this [sigma]
   WindowSolver solver = WindowSolver::kGaussNewton;  // "gauss_newton" or "ceres" (the reference)
   double code_huber = 3.0;       // Huber threshold of DD code and Doppler factors [sigma]
   double rejection_sigma = 5.0;  // rows with post-solve residuals beyond this are removed

@@ -35,6 +35,11 @@ enum class WindowSolver { kGaussNewton, kCeres };
 class SlidingWindow {
  public:
   void setSolver(WindowSolver solver) { solver_ = solver; }
+  /// Gauss-Newton also ends when what is left to gain would move the window by at most `sigma` in
+  /// its own posterior metric (a predicted or actual cost change below sigma^2 / 2), so that no
+  /// state moves by more than `sigma` of its own sigma. 0 (the default): the relative tolerance
+  /// alone, as Ceres.
+  void setStepTolerance(double sigma) { step_sigma_ = sigma; }
   /// `block.key` is the variable; values are ambient ([w,x,y,z] for rotations).
   void addVariable(const StateBlock& block, const Eigen::VectorXd& value);
   void removeVariable(const StateKey& name);  // and every factor on it
@@ -119,6 +124,7 @@ class SlidingWindow {
   long version_ = 0;    // bumped by every change of variables, values or factors
   long structure_ = 0;  // bumped by every change of variables or factors (not of values)
   WindowSolver solver_ = WindowSolver::kGaussNewton;
+  double step_sigma_ = 0.0;
   /// The robust Hessian, gradient and cost of the whole window at one version of it, factorized
   /// on first use.
   struct Linearization;

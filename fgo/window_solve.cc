@@ -265,7 +265,8 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
     // here, and the factorization just made serves the covariances (no relinearization).
     const Eigen::VectorXd H_dx = lin->H.selfadjointView<Eigen::Lower>() * dx;
     const double predicted = -lin->b.dot(dx) - 0.5 * dx.dot(H_dx);
-    if (predicted <= function_tolerance * lin->cost) break;
+    const double enough = std::max(function_tolerance * lin->cost, 0.5 * step_sigma_ * step_sigma_);
+    if (predicted <= enough) break;
     double x_norm = 0.0;
     for (auto& [name, x] : saved) {
       Variable& v = vars_.at(name);
@@ -282,7 +283,7 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
     std::shared_ptr<Linearization> next = linearizeWindow();
     // As Ceres: a cost change (either way) below the tolerance ends the solve.
     const double change = lin->cost - next->cost;
-    const bool converged = std::abs(change) <= function_tolerance * lin->cost;
+    const bool converged = std::abs(change) <= enough;
     if (!(change >= 0.0)) {
       // Worse: back to the previous values (whose linearization `lin` still is), damped.
       for (const auto& [name, x] : saved) vars_.at(name).value = x;
