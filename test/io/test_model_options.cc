@@ -100,8 +100,12 @@ TEST(FgoOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_DOUBLE_EQ(c.code_huber, d.code_huber);
   EXPECT_DOUBLE_EQ(c.rejection_sigma, d.rejection_sigma);
   EXPECT_EQ(c.max_rejections, d.max_rejections);
+  EXPECT_DOUBLE_EQ(c.stop_step_sigma, d.stop_step_sigma);
   test::TempDir dir;
   EXPECT_EQ(readFgoOptions(dir.write("w.yaml", "fgo:\n  window: 7\n")).window, 7);
+  EXPECT_DOUBLE_EQ(
+      readFgoOptions(dir.write("s.yaml", "fgo:\n  stop_step_sigma: 0\n")).stop_step_sigma, 0.0);
+  EXPECT_THROW(readFgoOptions(dir.write("n.yaml", "fgo:\n  stop_step_sigma: -1\n")), DataError);
   EXPECT_THROW(readFgoOptions(dir.write("b.yaml", "fgo:\n  window: 1\n")), DataError);
   EXPECT_EQ(c.solver, WindowSolver::kGaussNewton);
   EXPECT_EQ(readFgoOptions(dir.write("c.yaml", "fgo:\n  solver: ceres\n")).solver,
