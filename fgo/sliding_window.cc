@@ -78,7 +78,10 @@ void SlidingWindow::addFactor(Factor f) {
     f.sqrt_info =
         std::make_shared<const Eigen::MatrixXd>(whitener(f.model->covariance(), f.model->name()));
   }
-  f.sqrt_info_diagonal = f.sqrt_info->isDiagonal(0.0);
+  const Eigen::MatrixXd& S = *f.sqrt_info;
+  f.sqrt_info_shape = S.isDiagonal(0.0)          ? Factor::Shape::kDiagonal
+                      : S.isLowerTriangular(0.0) ? Factor::Shape::kLower
+                                                 : Factor::Shape::kDense;
   factors_.push_back(std::move(f));
 }
 
@@ -210,16 +213,19 @@ void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& facto
     for (size_t i = 0; i < l.segments.size(); ++i) {
       Jf.middleCols(l.segments[i].local, l.segments[i].size) = J[l.blocks[i]];
     }
-    // S is lower triangular (often diagonal): half the products of a dense one, or none.
+    // A lower-triangular S takes half the products of a dense one, a diagonal one none.
     const Eigen::MatrixXd& S = *f->sqrt_info;
     Eigen::MatrixXd Jw;
     Eigen::VectorXd rw;
-    if (f->sqrt_info_diagonal) {
+    if (f->sqrt_info_shape == Factor::Shape::kDiagonal) {
       Jw = S.diagonal().asDiagonal() * Jf;
       rw = S.diagonal().cwiseProduct(r);
-    } else {
+    } else if (f->sqrt_info_shape == Factor::Shape::kLower) {
       Jw.noalias() = S.triangularView<Eigen::Lower>() * Jf;
       rw.noalias() = S.triangularView<Eigen::Lower>() * r;
+    } else {
+      Jw.noalias() = S * Jf;
+      rw.noalias() = S * r;
     }
     const double s2 = rw.squaredNorm();
     if (robust && f->huber > 0.0 && s2 > f->huber * f->huber) {

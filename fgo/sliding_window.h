@@ -21,10 +21,10 @@ struct Factor {
   std::vector<StateKey> vars;
   double huber = 0.0;  // > 0: Huber loss with this threshold on the whitened residual
   std::string tag;     // what it is, for finding it again ("dd_phase#12", "fix", ...)
-  // The model's whitener (its covariance is fixed), lower triangular: set when the factor enters
-  // a window, with whether it is diagonal (then applied as a row scaling).
+  // The model's whitener (its covariance is fixed): set when the factor enters a window, with its
+  // shape, which decides how it is applied (whitener() gives a lower-triangular one).
   std::shared_ptr<const Eigen::MatrixXd> sqrt_info = nullptr;
-  bool sqrt_info_diagonal = false;
+  enum class Shape { kDense, kLower, kDiagonal } sqrt_info_shape = Shape::kDense;
 };
 
 /// How the window is solved. Both minimize the same robust cost; Gauss-Newton forms the sparse
