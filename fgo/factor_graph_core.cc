@@ -28,9 +28,7 @@ constexpr double kScaleRandomWalkFloor = 1e-6;  // [1/sqrt(s)]
 }  // namespace
 
 using fgo_tag::tagged;
-using state::kPbg;
-using state::kPbm;
-using state::kQbm;
+using state::kPbg, state::kPbm, state::kQbm;
 
 FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const BroadcastOrbits& orbits,
                                  const CalibrationOptions& o, const FgoOptions& fo,
