@@ -25,6 +25,9 @@ struct Factor {
   // shape, which decides how it is applied (whitener() gives a lower-triangular one).
   std::shared_ptr<const Eigen::MatrixXd> sqrt_info = nullptr;
   enum class Shape { kDense, kLower, kDiagonal } sqrt_info_shape = Shape::kDense;
+  // A lower-triangular whitener's diagonal blocks (first row, rows): independent groups of rows,
+  // as the DD factor's code and phase per reference satellite and band, are whitened apart.
+  std::vector<std::pair<int, int>> sqrt_info_blocks;
 };
 
 /// How the window is solved. Both minimize the same robust cost; Gauss-Newton forms the sparse

@@ -31,18 +31,22 @@ LtDL factorLtDL(const Eigen::MatrixXd& Qin) {
 
 namespace {
 
-// Integer Gauss transformation making |L(i, j)| <= 1/2.
-void gauss(Eigen::MatrixXd& L, Eigen::MatrixXd& Z, int i, int j) {
+// Integer Gauss transformation making |L(i, j)| <= 1/2. Z^T's inverse follows each elementary
+// step (its inverse applied from the other side), exactly in integers, instead of a general
+// inversion at the end (which cost as much as the decorrelation itself).
+void gauss(Eigen::MatrixXd& L, Eigen::MatrixXd& Z, Eigen::MatrixXd& Zt_inv, int i, int j) {
   if (std::abs(L(i, j)) < 0.5) return;  // rounds to 0: most calls, without the rounding's cost
   const double mu = std::round(L(i, j));
   if (mu == 0.0) return;
   const int n = static_cast<int>(L.rows());
   for (int k = i; k < n; ++k) L(k, j) -= mu * L(k, i);
   Z.col(j) -= mu * Z.col(i);
+  Zt_inv.col(i) += mu * Zt_inv.col(j);
 }
 
 // Swaps ambiguities j and j+1, updating L and D so that Q stays L^T D L.
-void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, Eigen::MatrixXd& Z) {
+void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, Eigen::MatrixXd& Z,
+             Eigen::MatrixXd& Zt_inv) {
   const int n = static_cast<int>(L.rows());
   const double eta = D[j] / del, lam = D[j + 1] * L(j + 1, j) / del;
   D[j] = eta * D[j + 1];
@@ -55,6 +59,7 @@ void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, Eigen::M
   L(j + 1, j) = lam;
   for (int k = j + 2; k < n; ++k) std::swap(L(k, j), L(k, j + 1));
   Z.col(j).swap(Z.col(j + 1));
+  Zt_inv.col(j).swap(Zt_inv.col(j + 1));
 }
 
 double sgn(double x) { return x <= 0.0 ? -1.0 : 1.0; }
@@ -63,17 +68,17 @@ double sgn(double x) { return x <= 0.0 ? -1.0 : 1.0; }
 
 Decorrelation decorrelate(const Eigen::MatrixXd& Q) {
   const int n = static_cast<int>(Q.rows());
-  Decorrelation d{Eigen::MatrixXd::Identity(n, n), factorLtDL(Q)};
+  Decorrelation d{Eigen::MatrixXd::Identity(n, n), Eigen::MatrixXd::Identity(n, n), factorLtDL(Q)};
   Eigen::MatrixXd& L = d.ltdl.L;
   Eigen::VectorXd& D = d.ltdl.D;
   int j = n - 2, k = n - 2;
   while (j >= 0) {
     if (j <= k) {
-      for (int i = j + 1; i < n; ++i) gauss(L, d.Z, i, j);
+      for (int i = j + 1; i < n; ++i) gauss(L, d.Z, d.Zt_inv, i, j);
     }
     const double del = D[j] + L(j + 1, j) * L(j + 1, j) * D[j + 1];
     if (del + 1e-6 < D[j + 1]) {
-      permute(L, D, j, del, d.Z);
+      permute(L, D, j, del, d.Z, d.Zt_inv);
       k = j;
       j = n - 2;
     } else {
@@ -155,8 +160,7 @@ SearchResult integerSearch(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, i
   const Eigen::VectorXd zs = d.Z.transpose() * (a - a_int);
   SearchResult r = searchDecorrelated(d.ltdl.L, d.ltdl.D, zs, m);
   r.conditional_variances = d.ltdl.D;
-  const Eigen::MatrixXd Zt_inv = d.Z.transpose().inverse();
-  for (auto& c : r.candidates) c = (Zt_inv * c).array().round().matrix() + a_int;
+  for (auto& c : r.candidates) c = (d.Zt_inv * c).array().round().matrix() + a_int;
   return r;
 }
 

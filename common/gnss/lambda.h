@@ -20,8 +20,9 @@ LtDL factorLtDL(const Eigen::MatrixXd& Q);
 
 /// The decorrelating transformation: z = Z^T a has covariance Z^T Q Z = L^T diag(D) L.
 struct Decorrelation {
-  Eigen::MatrixXd Z;  // integer, unimodular
-  LtDL ltdl;          // of Z^T Q Z
+  Eigen::MatrixXd Z;       // integer, unimodular
+  Eigen::MatrixXd Zt_inv;  // (Z^T)^-1, integer too
+  LtDL ltdl;               // of Z^T Q Z
 };
 Decorrelation decorrelate(const Eigen::MatrixXd& Q);
 

@@ -69,6 +69,9 @@ TEST(Lambda, ZTransformIsUnimodularAndDecorrelates) {
     // Integer entries, determinant +-1.
     EXPECT_LT((d.Z - d.Z.array().round().matrix()).norm(), 1e-12);
     EXPECT_NEAR(std::abs(d.Z.determinant()), 1.0, 1e-6);
+    // The inverse of Z^T kept along the transformation, integer and exact.
+    EXPECT_LT((d.Zt_inv - d.Zt_inv.array().round().matrix()).norm(), 1e-12);
+    EXPECT_EQ((d.Z.transpose() * d.Zt_inv - Eigen::MatrixXd::Identity(n, n)).norm(), 0.0);
     const Eigen::MatrixXd Qz = d.Z.transpose() * Q * d.Z;
     EXPECT_LT((d.ltdl.L.transpose() * d.ltdl.D.asDiagonal() * d.ltdl.L - Qz).norm(),
               1e-8 * Qz.norm());
