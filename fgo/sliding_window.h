@@ -27,7 +27,7 @@ struct Factor {
   enum class Shape { kDense, kLower, kDiagonal } sqrt_info_shape = Shape::kDense;
   // A lower-triangular whitener's diagonal blocks (first row, rows): independent groups of rows,
   // as the DD factor's code and phase per reference satellite and band, are whitened apart.
-  std::vector<std::pair<int, int>> sqrt_info_blocks;
+  std::vector<std::pair<int, int>> sqrt_info_blocks = {};
 };
 
 /// How the window is solved. Both minimize the same robust cost; Gauss-Newton forms the sparse

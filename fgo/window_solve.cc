@@ -12,6 +12,15 @@
 
 namespace giocal {
 
+namespace {
+
+/// CHOLMOD's simplicial LL^T with its factor in reach, for solves with L alone.
+struct SimplicialLlt : Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> {
+  cholmod_factor* factor() { return m_cholmodFactor; }
+};
+
+}  // namespace
+
 struct SlidingWindow::WindowPlan {
   long structure = -1;
   int n = 0;
@@ -20,9 +29,10 @@ struct SlidingWindow::WindowPlan {
   std::vector<FactorLayout> layouts;
   Eigen::SparseMatrix<double> pattern;  // of H's lower triangle, values zero
   std::vector<std::vector<int>> dest;   // per layout: where each lower entry of its J^T J goes
+  std::vector<std::vector<int>> src;    // per layout: that entry's place in the factor's Hf
   long factored = -1;                   // the linearization whose numbers `llt` holds
   bool ok = false;
-  Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> llt;
+  SimplicialLlt llt;
 };
 
 struct SlidingWindow::Linearization {
@@ -51,6 +61,33 @@ struct SlidingWindow::Linearization {
       Y = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>().ldlt().solve(X);
     }
     return Y;
+  }
+  /// The covariance of the tangent indices `idx`: with H = P^T L L^T P it is Y^T Y, Y = L^-1 P E
+  /// (E their unit columns), one triangular solve where H^-1 E takes two.
+  Eigen::MatrixXd marginal(const std::vector<int>& idx) {
+    factorize();
+    const auto n = static_cast<long>(H.rows()), k = static_cast<long>(idx.size());
+    if (plan->ok) {
+      cholmod_common& cm = plan->llt.cholmod();
+      cholmod_dense* E = cholmod_zeros(n, k, CHOLMOD_REAL, &cm);
+      for (long j = 0; j < k; ++j) static_cast<double*>(E->x)[j * n + idx[j]] = 1.0;
+      cholmod_dense* PE = cholmod_solve(CHOLMOD_P, plan->llt.factor(), E, &cm);
+      cholmod_dense* Y = PE ? cholmod_solve(CHOLMOD_L, plan->llt.factor(), PE, &cm) : nullptr;
+      Eigen::MatrixXd C;
+      if (Y)
+        C.noalias() = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, k).transpose() *
+                      Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, k);
+      cholmod_free_dense(&E, &cm);
+      cholmod_free_dense(&PE, &cm);
+      cholmod_free_dense(&Y, &cm);
+      if (C.size() && C.allFinite()) return 0.5 * (C + C.transpose());
+    }
+    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, k);
+    for (long j = 0; j < k; ++j) E(idx[j], j) = 1.0;
+    const Eigen::MatrixXd X = solve(E);
+    Eigen::MatrixXd C(k, k);
+    for (long r = 0; r < k; ++r) C.row(r) = X.row(idx[r]);
+    return 0.5 * (C + C.transpose());
   }
   /// The Gauss-Newton step with the held components at zero: the unconstrained step corrected
   /// along H^-1 E (E the held columns), so that one factorization of the whole H serves the
@@ -88,26 +125,6 @@ struct SlidingWindow::Linearization {
     return dx;
   }
 };
-
-namespace {
-
-/// Calls fn(row, col, i, j) for each entry of a factor's J^T J in H's lower triangle, (i, j)
-/// being its place in the factor's own columns.
-template <typename Segments, typename Fn>
-void forEachLowerEntry(const Segments& segments, Fn&& fn) {
-  for (const auto& u : segments) {
-    for (const auto& v : segments) {
-      if (v.global > u.global) continue;
-      for (int j = 0; j < v.size; ++j) {
-        for (int i = u.global == v.global ? j : 0; i < u.size; ++i) {
-          fn(u.global + i, v.global + j, u.local + i, v.local + j);
-        }
-      }
-    }
-  }
-}
-
-}  // namespace
 
 std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
   auto p = std::make_shared<WindowPlan>();
@@ -172,9 +189,13 @@ std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
   const std::vector<double> zeros(inner.size(), 0.0);
   p->pattern = Eigen::Map<const Eigen::SparseMatrix<double>>(
       n, n, static_cast<long>(inner.size()), outer.data(), inner.data(), zeros.data());
-  // Where each entry of a factor's J^T J goes, in forEachLowerEntry's order.
+  // Each entry of a factor's J^T J in H's lower triangle: where it goes (dest) and where it is in
+  // the factor's own lower-triangular Hf (src), read per linearization as value[dest] += Hf[src].
   for (const FactorLayout& l : p->layouts) {
     std::vector<int>& d = p->dest.emplace_back();
+    std::vector<int>& from = p->src.emplace_back();
+    d.reserve(static_cast<size_t>(l.cols * (l.cols + 1) / 2));
+    from.reserve(d.capacity());
     for (const Segment& u : l.segments) {
       for (const Segment& v : l.segments) {
         if (v.global > u.global) continue;
@@ -189,7 +210,11 @@ std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
           const int base = u.global == v.global ? outer[static_cast<size_t>(col)] - j
                                                 : outer[static_cast<size_t>(col)] + (v.size - j) +
                                                       rows_before[c][at];
-          for (int i = u.global == v.global ? j : 0; i < u.size; ++i) d.push_back(base + i);
+          for (int i = u.global == v.global ? j : 0; i < u.size; ++i) {
+            d.push_back(base + i);
+            const int r = u.local + i, q = v.local + j;  // local row and column
+            from.push_back(r >= q ? q * l.cols + r : r * l.cols + q);
+          }
         }
       }
     }
@@ -210,12 +235,11 @@ std::shared_ptr<SlidingWindow::Linearization> SlidingWindow::linearizeWindow() c
   double* value = lin->H.valuePtr();
   forEachWhitenedFactor(
       plan_->layouts,
-      [&](size_t k, const FactorLayout& l, const Eigen::MatrixXd& Hf) {
-        const int* d = plan_->dest[k].data();
-        // Hf holds the lower triangle of the factor's own columns.
-        forEachLowerEntry(l.segments, [&](int, int, int i, int j) {
-          value[*d++] += i >= j ? Hf(i, j) : Hf(j, i);
-        });
+      [&](size_t k, const FactorLayout&, const Eigen::MatrixXd& Hf) {
+        const std::vector<int>& d = plan_->dest[k];
+        const int* from = plan_->src[k].data();
+        const double* h = Hf.data();  // the lower triangle of the factor's own columns
+        for (size_t t = 0; t < d.size(); ++t) value[d[t]] += h[from[t]];
       },
       &lin->b, true, &lin->cost);
   if (!lin->b.allFinite()) lin->cost = std::numeric_limits<double>::infinity();
@@ -237,12 +261,7 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<StateKey>& names) co
       throw std::out_of_range("no estimated window variable '" + name.str() + "'");
     for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
   }
-  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(f.plan->n, static_cast<long>(idx.size()));
-  for (size_t k = 0; k < idx.size(); ++k) E(idx[k], static_cast<long>(k)) = 1.0;
-  const Eigen::MatrixXd X = f.solve(E);
-  Eigen::MatrixXd C(idx.size(), idx.size());
-  for (size_t r = 0; r < idx.size(); ++r) C.row(static_cast<long>(r)) = X.row(idx[r]);
-  return 0.5 * (C + C.transpose());
+  return f.marginal(idx);
 }
 
 SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double function_tolerance) {
