@@ -9,6 +9,7 @@
 #include "common/gnss/double_difference.h"
 #include "common/math/kalman_update.h"
 #include "common/math/median.h"
+#include "common/math/row_compression.h"
 
 namespace giocal {
 
@@ -213,8 +214,13 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
       continue;
     }
     // The Joseph-form update with the optimal gain, which the shared update forms without the
-    // gain matrix (a third of the dense products' work; the initialization runs this).
-    const UpdateResult u = kalmanUpdate(P_, lin, INFINITY, {}, &workspace_);
+    // gain matrix (a third of the dense products' work; the initialization runs this), with the
+    // code rows compressed into the three rows of information they carry on the position.
+    std::vector<int> code;
+    for (long k = 0; k < m; ++k) {
+      if (!used_obs[static_cast<size_t>(k)].phase) code.push_back(static_cast<int>(k));
+    }
+    const UpdateResult u = kalmanUpdate(P_, compressRows(lin, code), INFINITY, {}, &workspace_);
     if (u.accepted) x_ += u.dx;
     break;
   }
@@ -242,12 +248,10 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   sol.satellites = static_cast<int>(used.size());
   const long na = static_cast<long>(dd.size());
   if (na < options_.lambda.min_fixed) return sol;
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(na, x_.size());
+  Eigen::VectorXd a(na);
   for (long k = 0; k < na; ++k) {
-    A(k, dd[static_cast<size_t>(k)].first) = 1.0;
-    A(k, dd[static_cast<size_t>(k)].second) = -1.0;
+    a[k] = x_[dd[static_cast<size_t>(k)].first] - x_[dd[static_cast<size_t>(k)].second];
   }
-  const Eigen::VectorXd a = A * x_;
   const Eigen::MatrixXd Qa = ddAmbiguityCovariance(P_, dd);
   const std::vector<int> drop = lowestElevationFirst(dd_el);
   AmbiguityFix fix;
@@ -258,18 +262,26 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   }
   sol.ratio = fix.ratio;
   if (!fix.fixed) return sol;
-  const long nf = static_cast<long>(fix.indices.size());
-  Eigen::MatrixXd Af(nf, x_.size());
-  for (long k = 0; k < nf; ++k) Af.row(k) = A.row(fix.indices[static_cast<size_t>(k)]);
-  const Eigen::MatrixXd Qf = Af * P_ * Af.transpose();
-  const Eigen::MatrixXd PAt = P_ * Af.transpose();
+  // The fixed solution conditioned on the fixed DD ambiguities. Their rows of A are e_s - e_r:
+  // A P A^T and P A^T are read off P, and of the fixed covariance only the position's block is
+  // needed (dense products with A were most of the filter's time when it fixes every epoch).
+  const long nf = static_cast<long>(fix.indices.size()), n = x_.size();
+  std::vector<std::pair<int, int>> fixed_dd;
+  for (int i : fix.indices) fixed_dd.push_back(dd[static_cast<size_t>(i)]);
+  const Eigen::MatrixXd Qf = ddAmbiguityCovariance(P_, fixed_dd);
+  Eigen::MatrixXd PAt(n, nf);
+  Eigen::VectorXd d(nf);
+  for (long k = 0; k < nf; ++k) {
+    const auto [i, j] = fixed_dd[static_cast<size_t>(k)];
+    PAt.col(k) = P_.col(i) - P_.col(j);
+    d[k] = x_[i] - x_[j] - fix.values[k];
+  }
   const Eigen::LDLT<Eigen::MatrixXd> qf(Qf);
-  const Eigen::VectorXd d = Af * x_ - fix.values;
   const Eigen::VectorXd x_fix = x_ - PAt * qf.solve(d);
-  const Eigen::MatrixXd P_fix = P_ - PAt * qf.solve(PAt.transpose());
   if (!fixIsConsistent(ep, obs, active, x_fix)) return sol;
   sol.p_e = x_fix.head<3>();
-  sol.cov_e = P_fix.topLeftCorner<3, 3>();
+  sol.cov_e = P_.topLeftCorner<3, 3>() -
+              PAt.topRows<3>() * qf.solve(Eigen::MatrixXd(PAt.topRows<3>().transpose()));
   // "Fixed" promises centimetres: a partial fix of too few ambiguities, under trees, can pass the
   // ratio test and still leave the horizontal position decimetres uncertain (its covariance says
   // so); it is reported as float, with the partially fixed position and that covariance.
@@ -279,12 +291,16 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   if (std::sqrt(cov_h.trace()) > options_.max_fix_sigma) return sol;
   sol.quality = 1;
   if (options_.fix_and_hold) {
-    const Eigen::MatrixXd R =
-        Eigen::MatrixXd::Identity(nf, nf) * std::pow(options_.hold_sigma_cycles, 2);
-    const Eigen::MatrixXd S = Af * P_ * Af.transpose() + R;
-    const Eigen::MatrixXd K = S.ldlt().solve(Af * P_).transpose();
-    x_ += K * (fix.values - Af * x_);
-    P_ = (Eigen::MatrixXd::Identity(x_.size(), x_.size()) - K * Af) * P_;
+    // Held as measurements of sigma hold_sigma_cycles: S = A P A^T + R, and the update
+    // P - P A^T S^-1 A P as W^T W with W = L^-1 (P A^T)^T.
+    Eigen::MatrixXd S = Qf;
+    S.diagonal().array() += std::pow(options_.hold_sigma_cycles, 2);
+    const Eigen::LLT<Eigen::MatrixXd> llt(S);
+    x_ -= PAt * llt.solve(d);
+    Eigen::MatrixXd W = PAt.transpose();
+    llt.matrixL().solveInPlace(W);
+    P_.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose(), -1.0);
+    P_.triangularView<Eigen::StrictlyUpper>() = P_.transpose();
   }
   return sol;
 }
