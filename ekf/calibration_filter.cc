@@ -147,31 +147,34 @@ void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vect
   pending_.reset();
 }
 
+MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
+                                        const std::vector<StateKey>& keys,
+                                        double gyro_variance) const {
+  MeasurementRows rows = linearize(model, s_.bind(keys), s_.dim());
+  if (gyro_variance > 0.0) {
+    const Eigen::MatrixXd H_bg = rows.H.middleCols(s_.offset(state::kBg), 3);
+    rows.R += gyro_variance * H_bg * H_bg.transpose();
+  }
+  return rows;
+}
+
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,
                                        const std::vector<StateKey>& keys, double chi2_gate,
                                        double gyro_variance, int iterations) {
-  const auto rowsAt = [&](const StateRegistry& at) {
-    MeasurementRows rows = linearize(model, at.bind(keys), at.dim());
-    if (gyro_variance > 0.0) {
-      const Eigen::MatrixXd H_bg = rows.H.middleCols(at.offset(state::kBg), 3);
-      rows.R += gyro_variance * H_bg * H_bg.transpose();
-    }
-    return rows;
-  };
-  if (iterations <= 1) return updateLinearized(rowsAt(s_), chi2_gate);
+  if (iterations <= 1) return updateLinearized(rows(model, keys, gyro_variance), chi2_gate);
   // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
   // state, keep the prior covariance; the last iteration's gain updates the covariance.
   const StateRegistry prior = s_;
   UpdateResult r;
   for (int it = 0; it < iterations; ++it) {
-    MeasurementRows rows = rowsAt(s_);
+    MeasurementRows lin = rows(model, keys, gyro_variance);
     const Eigen::VectorXd delta = s_.minus(prior);
-    rows.residual += rows.H * (-delta);  // residual linearized about the prior: r(x_i) - H d_i
+    lin.residual += lin.H * (-delta);  // residual linearized about the prior: r(x_i) - H d_i
     // Values and covariance back to the prior's, then updated in place (whole-registry copies
     // per iteration cost more than the update itself).
     s_.setValues(prior);
     s_.covariance() = prior.covariance();
-    r = kalmanUpdate(s_.covariance(), rows, it == 0 ? chi2_gate : INFINITY, heldIndices(),
+    r = kalmanUpdate(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
                      &workspace_);
     if (!r.accepted) return r;  // s_ holds the prior again
     s_.correct(r.dx);

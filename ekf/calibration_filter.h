@@ -68,6 +68,10 @@ class CalibrationFilter {
   UpdateResult update(const MeasurementModel& model, const std::vector<StateKey>& keys,
                       double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
 
+  /// The rows update() linearizes at the current state (the gyro variance added to R as there).
+  MeasurementRows rows(const MeasurementModel& model, const std::vector<StateKey>& keys,
+                       double gyro_variance = 0.0) const;
+
   /// One Kalman update from rows already linearized at the current state (a caller that screened
   /// them need not linearize again); held states as in update().
   UpdateResult updateLinearized(const MeasurementRows& rows, double chi2_gate);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
@@ -174,7 +175,11 @@ void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
         normalizedInnovations(s.covariance(), linearize(m, s.bind(keys), s.dim()));
     long worst = 0;
     if (z.maxCoeff(&worst) <= options_.innovation_gate) {
-      f.update(m, keys, INFINITY, gyro.variance);
+      // A row per satellite, on 13 state columns (velocity, attitude, gyro bias, lever arm,
+      // clock drift): compressed to those, as the DD code rows.
+      std::vector<int> all(obs.size());
+      std::iota(all.begin(), all.end(), 0);
+      f.updateLinearized(compressRows(f.rows(m, keys, gyro.variance), all), INFINITY);
       return;
     }
     obs.erase(obs.begin() + worst);
