@@ -70,8 +70,8 @@ struct SlidingWindow::Linearization {
     if (plan->ok) {
       cholmod_common& cm = plan->llt.cholmod();
       cholmod_dense* E = cholmod_zeros(n, k, CHOLMOD_REAL, &cm);
-      for (long j = 0; j < k; ++j) static_cast<double*>(E->x)[j * n + idx[j]] = 1.0;
-      cholmod_dense* PE = cholmod_solve(CHOLMOD_P, plan->llt.factor(), E, &cm);
+      for (long j = 0; E && j < k; ++j) static_cast<double*>(E->x)[j * n + idx[j]] = 1.0;
+      cholmod_dense* PE = E ? cholmod_solve(CHOLMOD_P, plan->llt.factor(), E, &cm) : nullptr;
       cholmod_dense* Y = PE ? cholmod_solve(CHOLMOD_L, plan->llt.factor(), PE, &cm) : nullptr;
       Eigen::MatrixXd C;
       if (Y)
