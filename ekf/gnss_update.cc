@@ -18,6 +18,10 @@ namespace giocal {
 
 namespace {
 
+/// A held DD ambiguity within this of its integer counts as fixed without a search [cycles]: a
+/// hold leaves it within a few fix sigmas (1e-3 cycles); one further off is searched again.
+constexpr double kHeldOffsetCycles = 0.05;
+
 /// `first` for the model's first blocks, then the model's own keys (its ambiguities).
 std::vector<StateKey> modelKeys(const MeasurementModel& m, const std::vector<StateKey>& first) {
   std::vector<StateKey> keys = first;
@@ -205,6 +209,19 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
     el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
   }
   const Eigen::MatrixXd Qa = ddAmbiguityCovariance(s.covariance(), pairs);
+  // Every DD ambiguity already held at its integer: LAMBDA would return those integers and the
+  // filter would not move (below), so the search is not run. Most epochs of a drive are such.
+  const double held_variance = 4.0 * options_.fix_sigma_cycles * options_.fix_sigma_cycles;
+  bool all_held = true;
+  for (long k = 0; k < na && all_held; ++k) {
+    all_held = Qa(k, k) < held_variance && std::abs(a[k] - std::round(a[k])) < kHeldOffsetCycles;
+  }
+  if (all_held) {
+    rep.fixed = true;
+    rep.fixed_ambiguities = static_cast<int>(na);
+    rep.ratio = INFINITY;
+    return;
+  }
   const std::vector<int> drop = lowestElevationFirst(el);
   AmbiguityFix fix;
   try {
@@ -217,7 +234,6 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
 
   // Fixes already held (their DD variance is at the constraint's level) need no new update.
   std::vector<DdAmbiguityFix> fixes;
-  const double held_variance = 4.0 * options_.fix_sigma_cycles * options_.fix_sigma_cycles;
   for (size_t k = 0; k < fix.indices.size(); ++k) {
     const int i = fix.indices[k];
     if (Qa(i, i) < held_variance) continue;

@@ -66,8 +66,9 @@ class SlidingWindow {
     double final_cost = 0.0;
   };
   /// Stops when a step changes the cost by less than `function_tolerance` of it (Ceres' default,
-  /// 1e-6), when the own solver's next step is predicted to gain less than that, when the step is
-  /// below 1e-8 relative, or after `max_iterations` steps.
+  /// 1e-6), when the own solver's next step is predicted to gain less than that (asked first of
+  /// the last step's factorization, then of a new one), when the step is below 1e-8 relative, or
+  /// after `max_iterations` steps.
   SolveReport solve(int max_iterations, double function_tolerance = 1e-6);
 
   /// Whitened Gauss-Newton system over `order` (tangent, in that order) from `factors` at the
@@ -83,6 +84,10 @@ class SlidingWindow {
 
   /// Removes `names` and the factors on them, leaving one linear prior on their neighbours.
   void marginalize(const std::vector<StateKey>& names);
+
+  /// How many sparsity patterns were analysed (ordering, symbolic factor): a window that slid
+  /// into the shape of the last reuses its analysis.
+  long symbolicAnalyses() const { return symbolic_analyses_; }
 
  private:
   /// A factor's variable in the window's tangent (global) and in the factor's columns (local).
@@ -140,6 +145,7 @@ class SlidingWindow {
   mutable std::shared_ptr<Linearization> linearization_;
   mutable std::shared_ptr<WindowPlan> plan_;
   mutable long linearizations_ = 0;
+  mutable long symbolic_analyses_ = 0;
   /// The current version's linearization, factorized.
   Linearization& factorization() const;
 };

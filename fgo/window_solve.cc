@@ -21,18 +21,25 @@ struct SimplicialLlt : Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> 
 
 }  // namespace
 
-struct SlidingWindow::WindowPlan {
-  long structure = -1;
-  int n = 0;
-  std::map<StateKey, int> offset;
-  std::vector<int> held;  // tangent indices held at their value in a solve
-  std::vector<FactorLayout> layouts;
+/// What a sparsity pattern needs once: H's pattern, where each factor's J^T J entries go, and
+/// CHOLMOD's ordering and symbolic analysis. Windows of the same shape share it (below).
+struct SymbolicPlan {
+  std::vector<int> shape;               // the window's shape: blocks, held indices, segments
   Eigen::SparseMatrix<double> pattern;  // of H's lower triangle, values zero
   std::vector<std::vector<int>> dest;   // per layout: where each lower entry of its J^T J goes
   std::vector<std::vector<int>> src;    // per layout: that entry's place in the factor's Hf
   long factored = -1;                   // the linearization whose numbers `llt` holds
   bool ok = false;
   SimplicialLlt llt;
+};
+
+struct SlidingWindow::WindowPlan {
+  long structure = -1;
+  int n = 0;
+  std::map<StateKey, int> offset;
+  std::vector<int> held;  // tangent indices held at their value in a solve
+  std::vector<FactorLayout> layouts;
+  std::shared_ptr<SymbolicPlan> symbolic;
 };
 
 struct SlidingWindow::Linearization {
@@ -46,18 +53,19 @@ struct SlidingWindow::Linearization {
   std::shared_ptr<WindowPlan> plan;
 
   void factorize() {
-    if (plan->factored == id) return;
-    plan->llt.factorize(H);
-    plan->ok = plan->llt.info() == Eigen::Success;
-    plan->factored = id;
+    SymbolicPlan& sp = *plan->symbolic;
+    if (sp.factored == id) return;
+    sp.llt.factorize(H);
+    sp.ok = sp.llt.info() == Eigen::Success;
+    sp.factored = id;
   }
   /// H^-1 X; the dense pivoting LDLT where H is singular (a direction nothing observes) still
   /// returns the observed part.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& X) {
     factorize();
     Eigen::MatrixXd Y;
-    if (plan->ok) Y = plan->llt.solve(X);
-    if (!plan->ok || !Y.allFinite()) {
+    if (plan->symbolic->ok) Y = plan->symbolic->llt.solve(X);
+    if (!plan->symbolic->ok || !Y.allFinite()) {
       Y = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>().ldlt().solve(X);
     }
     return Y;
@@ -67,12 +75,13 @@ struct SlidingWindow::Linearization {
   Eigen::MatrixXd marginal(const std::vector<int>& idx) {
     factorize();
     const auto n = static_cast<long>(H.rows()), k = static_cast<long>(idx.size());
-    if (plan->ok) {
-      cholmod_common& cm = plan->llt.cholmod();
+    SimplicialLlt& llt = plan->symbolic->llt;
+    if (plan->symbolic->ok) {
+      cholmod_common& cm = llt.cholmod();
       cholmod_dense* E = cholmod_zeros(n, k, CHOLMOD_REAL, &cm);
       for (long j = 0; E && j < k; ++j) static_cast<double*>(E->x)[j * n + idx[j]] = 1.0;
-      cholmod_dense* PE = E ? cholmod_solve(CHOLMOD_P, plan->llt.factor(), E, &cm) : nullptr;
-      cholmod_dense* Y = PE ? cholmod_solve(CHOLMOD_L, plan->llt.factor(), PE, &cm) : nullptr;
+      cholmod_dense* PE = E ? cholmod_solve(CHOLMOD_P, llt.factor(), E, &cm) : nullptr;
+      cholmod_dense* Y = PE ? cholmod_solve(CHOLMOD_L, llt.factor(), PE, &cm) : nullptr;
       Eigen::MatrixXd C;
       if (Y)
         C.noalias() = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, k).transpose() *
@@ -97,7 +106,7 @@ struct SlidingWindow::Linearization {
       Linearization damped;
       damped.id = -1;  // never a window linearization's
       damped.plan = plan;
-      plan->factored = -2;  // each damping is factorized anew
+      plan->symbolic->factored = -2;  // each damping is factorized anew
       damped.H = H;
       damped.b = b;
       for (int i = 0; i < H.rows(); ++i) {
@@ -137,6 +146,29 @@ std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
   std::vector<const Factor*> all;
   for (const Factor& fac : factors_) all.push_back(&fac);
   p->layouts = layouts(p->offset, all);
+  // A window that slid by one epoch usually has the shape of the last: the same blocks at the
+  // same offsets, the same held indices and every factor on the same segments. Then H's pattern,
+  // the scatter indices and CHOLMOD's ordering (the same pattern gives the same one) are reused:
+  // the symbolic work was about a seventh of the factor graph's time.
+  std::vector<int> shape{p->n, static_cast<int>(order.size())};
+  for (const StateKey& name : order) {
+    shape.push_back(p->offset.at(name));
+    shape.push_back(vars_.at(name).block.tangentSize());
+  }
+  shape.push_back(static_cast<int>(p->held.size()));
+  shape.insert(shape.end(), p->held.begin(), p->held.end());
+  for (const FactorLayout& l : p->layouts) {
+    shape.push_back(static_cast<int>(l.segments.size()));
+    for (const Segment& v : l.segments) shape.insert(shape.end(), {v.global, v.local, v.size});
+  }
+  if (plan_ && plan_->symbolic && plan_->symbolic->shape == shape) {
+    p->symbolic = plan_->symbolic;
+    return p;
+  }
+  p->symbolic = std::make_shared<SymbolicPlan>();
+  ++symbolic_analyses_;
+  SymbolicPlan& sp = *p->symbolic;
+  sp.shape = std::move(shape);
   // The window's Hessian is sparse (a chain of epochs plus the calibration and ambiguity columns):
   // a sparse factorization is ~10x cheaper than a dense one at window 30, and CHOLMOD's ordering
   // ~15x cheaper than Eigen's own AMD (measured, docs/results.md). Its lower triangle's pattern is
@@ -187,13 +219,13 @@ std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
   }
   outer[static_cast<size_t>(n)] = static_cast<int>(inner.size());
   const std::vector<double> zeros(inner.size(), 0.0);
-  p->pattern = Eigen::Map<const Eigen::SparseMatrix<double>>(
+  sp.pattern = Eigen::Map<const Eigen::SparseMatrix<double>>(
       n, n, static_cast<long>(inner.size()), outer.data(), inner.data(), zeros.data());
   // Each entry of a factor's J^T J in H's lower triangle: where it goes (dest) and where it is in
   // the factor's own lower-triangular Hf (src), read per linearization as value[dest] += Hf[src].
   for (const FactorLayout& l : p->layouts) {
-    std::vector<int>& d = p->dest.emplace_back();
-    std::vector<int>& from = p->src.emplace_back();
+    std::vector<int>& d = sp.dest.emplace_back();
+    std::vector<int>& from = sp.src.emplace_back();
     d.reserve(static_cast<size_t>(l.cols * (l.cols + 1) / 2));
     from.reserve(d.capacity());
     for (const Segment& u : l.segments) {
@@ -219,8 +251,8 @@ std::shared_ptr<SlidingWindow::WindowPlan> SlidingWindow::plan() const {
       }
     }
   }
-  p->llt.cholmod().print = 0;  // a singular H is handled by the callers, not printed
-  p->llt.analyzePattern(p->pattern);
+  sp.llt.cholmod().print = 0;  // a singular H is handled by the callers, not printed
+  sp.llt.analyzePattern(sp.pattern);
   return p;
 }
 
@@ -230,14 +262,14 @@ std::shared_ptr<SlidingWindow::Linearization> SlidingWindow::linearizeWindow() c
   lin->id = ++linearizations_;
   lin->version = version_;
   lin->plan = plan_;
-  lin->H = plan_->pattern;
+  lin->H = plan_->symbolic->pattern;
   lin->b = Eigen::VectorXd::Zero(plan_->n);
   double* value = lin->H.valuePtr();
   forEachWhitenedFactor(
       plan_->layouts,
       [&](size_t k, const FactorLayout&, const Eigen::MatrixXd& Hf) {
-        const std::vector<int>& d = plan_->dest[k];
-        const int* from = plan_->src[k].data();
+        const std::vector<int>& d = plan_->symbolic->dest[k];
+        const int* from = plan_->symbolic->src[k].data();
         const double* h = Hf.data();  // the lower triangle of the factor's own columns
         for (size_t t = 0; t < d.size(); ++t) value[d[t]] += h[from[t]];
       },
@@ -312,10 +344,27 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
       if (converged || damping > 1e2) break;
       continue;
     }
+    const std::shared_ptr<Linearization> previous = lin;
     lin = next;
     damping = 0.0;
     ++report.iterations;
     if (converged || dx.norm() <= 1e-8 * (std::sqrt(x_norm) + 1e-8)) break;
+    // Whether another step is worth taking, asked first of the factorization just made (the
+    // Hessian barely moves over a step this late): if that step gains less than the tolerance,
+    // the solve ends and the same factorization serves the covariances. Most epochs end here,
+    // one factorization sooner.
+    auto chord = std::make_shared<Linearization>(*previous);
+    chord->b = lin->b;
+    chord->cost = lin->cost;
+    chord->version = version_;
+    const Eigen::VectorXd dc = chord->step(0.0);
+    if (dc.allFinite()) {
+      const Eigen::VectorXd H_dc = chord->H.selfadjointView<Eigen::Lower>() * dc;
+      if (-chord->b.dot(dc) - 0.5 * dc.dot(H_dc) <= enough) {
+        lin = chord;
+        break;
+      }
+    }
   }
   // The last linearization is at the current values: the covariances asked for next reuse it.
   linearization_ = lin;
