@@ -66,6 +66,12 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   dr.calibration = source.calibration;
   // An estimated odometer delay is part of the calibration: its stamps are put back on time.
   for (OdomSample& s : in.odom) s.t -= source.odometer_delay_s;
+  // So is an estimated gyro tilt: the IMU is integrated with it (held, as the calibration is).
+  if (source.gyro_tilt.allFinite()) {
+    dr.options.estimate_gyro_tilt = true;
+    dr.options.gyro_tilt_start = source.gyro_tilt;
+    dr.options.gyro_tilt_sigma_deg = source.gyro_tilt_sd * kRadToDeg;
+  }
   std::string reference_path = job.reference;
   if (reference_path.empty()) {
     if (in.description.truth.empty()) {
@@ -104,6 +110,10 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   j["calibration_source"] = source.label;
   j["calibration"] = calibrationJson(source.calibration);
   if (source.odometer_delay_s != 0.0) j["odometer_delay_applied_s"] = source.odometer_delay_s;
+  if (source.gyro_tilt.allFinite()) {
+    j["gyro_tilt_applied_deg"] = {source.gyro_tilt.x() * kRadToDeg,
+                                  source.gyro_tilt.y() * kRadToDeg};
+  }
   j["reference"] = reference_path;
   j["gnss_before_start"] = job.positions.empty() ? "tc" : "lc: " + job.positions;
   j["start_s"] = job.start_s;

@@ -89,6 +89,11 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
     s_.add(vectorBlock(state::kTdOdo, 1), Eigen::VectorXd::Zero(1),
            Eigen::MatrixXd::Constant(1, 1, sd * sd));
   }
+  if (options.estimate_gyro_tilt) {
+    const double sd = options.gyro_tilt_sigma_deg * kDegToRad;
+    s_.add(vectorBlock(state::kGyroTilt, 2), options.gyro_tilt_start,
+           Eigen::Matrix2d::Identity() * sd * sd);
+  }
 }
 
 std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
@@ -118,6 +123,9 @@ std::vector<int> CalibrationFilter::heldIndices() const {
     const std::array<int, 8> idx = calibrationIndices(s_);
     std::vector<int> held(idx.begin(), idx.end());
     if (s_.has(state::kTdOdo)) held.push_back(s_.offset(state::kTdOdo));
+    if (s_.has(state::kGyroTilt)) {
+      for (int k = 0; k < 2; ++k) held.push_back(s_.offset(state::kGyroTilt) + k);
+    }
     return held;
   }
   // States the run keeps at the prior (p_b_m.z in planar motion, a speed-only odometer's s_w).
@@ -125,26 +133,6 @@ std::vector<int> CalibrationFilter::heldIndices() const {
   std::vector<int> held;
   for (int k : heldStates(options_, dataset_)) held.push_back(idx[static_cast<size_t>(k)]);
   return held;
-}
-
-void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vector3d& v_n_b,
-                                 const Eigen::Quaterniond& q_n_b) {
-  NavState x = navState(s_);
-  const Mat3 dR = q_n_b.toRotationMatrix() * x.q_n_b.toRotationMatrix().transpose();
-  const auto rotate = [&](const StateKey& key) {
-    const Quat q = quatFromWxyz(s_.value(key).data());
-    quatToWxyz(Quat(dR * q.toRotationMatrix()).normalized(), s_.value(key).data());
-  };
-  if (s_.has(kOdoP)) {
-    s_.value(kOdoP) = p_n_b + dR * (s_.value(kOdoP) - x.p_n_b);
-    rotate(kOdoQ);
-  }
-  if (s_.has(kHeadingClone)) rotate(kHeadingClone);
-  x.p_n_b = p_n_b;
-  x.v_n_b = v_n_b;
-  x.q_n_b = q_n_b;
-  setNavState(s_, x);
-  pending_.reset();
 }
 
 MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
@@ -223,8 +211,10 @@ void CalibrationFilter::feedMotion(double t) {
 const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
   if (!pending_) {
     const NavState x = navState(s_);
+    const GyroTilt tilt =
+        s_.has(state::kGyroTilt) ? GyroTilt(s_.value(state::kGyroTilt)) : GyroTilt::Zero();
     pending_ = std::make_unique<ImuPreintegration>(dataset_.imu_noise, frame_.gravity_n(x.p_n_b),
-                                                   frame_.omega_ie_n(), x.b_a, x.b_g);
+                                                   frame_.omega_ie_n(), x.b_a, x.b_g, tilt);
     pending_t_ = t_;
   }
   if (t > pending_t_) {
@@ -352,12 +342,6 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
   return step;
 }
 
-NavState CalibrationFilter::nav() const {
-  NavState x = navState(s_);
-  x.t = t_;
-  return x;
-}
-
 CalibrationEstimate CalibrationFilter::calibration() const {
   CalibrationEstimate e;
   e.t = t_;
@@ -373,18 +357,12 @@ CalibrationEstimate CalibrationFilter::calibration() const {
     e.odometer_delay_s = s_.value(state::kTdOdo)[0];
     e.odometer_delay_sd_s = std::sqrt(s_.covariance()(d, d));
   }
-  return e;
-}
-
-TruthSample CalibrationFilter::trajectorySample(double t) {
-  NavState x = nav();
-  t = std::min(t, imu_.back().t);
-  if (t > t_) {
-    x = pendingTo(t).predict(x);  // mean prediction; the covariance moves at the next update
-  } else {
-    t = t_;
+  if (s_.has(state::kGyroTilt)) {
+    const int d = s_.offset(state::kGyroTilt);
+    e.gyro_tilt = s_.value(state::kGyroTilt);
+    e.gyro_tilt_sd = s_.covariance().block<2, 2>(d, d).diagonal().cwiseSqrt();
   }
-  return truthRow(frame_, x, t);
+  return e;
 }
 
 bool CalibrationFilter::updatePosition(const PositionFix& fix) {

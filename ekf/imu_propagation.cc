@@ -1,6 +1,7 @@
 #include "ekf/imu_propagation.h"
 
 #include <Eigen/LU>
+#include <optional>
 #include <vector>
 
 #include "common/math/rotation.h"
@@ -27,30 +28,39 @@ void setNavState(StateRegistry& s, const NavState& x) {
 
 void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
   const NavState xi = navState(s);
-  const NavState xj = pre.predict(xi);
-  const ImuResidual r = pre.evaluate(xi, xj);
+  std::optional<GyroTilt> tilt;
+  if (s.has(state::kGyroTilt)) tilt = GyroTilt(s.value(state::kGyroTilt));
+  const NavState xj = pre.predict(xi, tilt);
+  const ImuResidual r = pre.evaluate(xi, xj, tilt);
   // Residual Jacobians in the variable order p, q, v, b_a, b_g.
   Eigen::Matrix<double, 15, 15> Ji, Jj;
   Ji << r.J_p_i, r.J_q_i, r.J_v_i, r.J_ba_i, r.J_bg_i;
   Jj << r.J_p_j, r.J_q_j, r.J_v_j, r.J_ba_j, r.J_bg_j;
   const Eigen::Matrix<double, 15, 15> Jj_inv = Jj.inverse();
-  const Eigen::Matrix<double, 15, 15> F = -Jj_inv * Ji;
   const Eigen::Matrix<double, 15, 15> Q = Jj_inv * pre.covariance() * Jj_inv.transpose();
 
   // Only the navigation rows of Phi differ from identity: P' = Phi P Phi^T touches the navigation
-  // rows and columns only, at O(15 n) instead of O(n^3).
-  std::vector<int> idx;  // error-state index of each navigation component, in F's order
+  // rows and columns only, at O(15 n) instead of O(n^3). G: those rows over the navigation
+  // states, then the gyro tilt's when it is estimated.
+  std::vector<int> idx;  // error-state index of each column of G
   for (const StateKey& key : {state::kP, state::kQ, state::kV, state::kBa, state::kBg}) {
     for (int k = 0; k < 3; ++k) idx.push_back(s.offset(key) + k);
   }
+  const int m = tilt ? 17 : 15;
+  Eigen::MatrixXd G(15, m);
+  G.leftCols<15>() = -Jj_inv * Ji;
+  if (tilt) {
+    G.rightCols<2>() = -Jj_inv * r.J_tilt;
+    for (int k = 0; k < 2; ++k) idx.push_back(s.offset(state::kGyroTilt) + k);
+  }
   Eigen::MatrixXd& P = s.covariance();
   const int n = s.dim();
-  Eigen::MatrixXd Pn(15, n);  // navigation rows of P
-  for (int a = 0; a < 15; ++a) Pn.row(a) = P.row(idx[static_cast<size_t>(a)]);
-  const Eigen::MatrixXd FPn = F * Pn;  // new navigation rows against the old state
-  Eigen::Matrix<double, 15, 15> FPnn;
-  for (int b = 0; b < 15; ++b) FPnn.col(b) = FPn.col(idx[static_cast<size_t>(b)]);
-  const Eigen::Matrix<double, 15, 15> Pnn_new = FPnn * F.transpose() + Q;
+  Eigen::MatrixXd Pn(m, n);  // the rows of P that G reads
+  for (int a = 0; a < m; ++a) Pn.row(a) = P.row(idx[static_cast<size_t>(a)]);
+  const Eigen::MatrixXd FPn = G * Pn;  // new navigation rows against the old state
+  Eigen::MatrixXd FPnn(15, m);
+  for (int b = 0; b < m; ++b) FPnn.col(b) = FPn.col(idx[static_cast<size_t>(b)]);
+  const Eigen::Matrix<double, 15, 15> Pnn_new = FPnn * G.transpose() + Q;
   for (int a = 0; a < 15; ++a) {
     const int i = idx[static_cast<size_t>(a)];
     P.row(i) = FPn.row(a);

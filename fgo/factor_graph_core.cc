@@ -58,47 +58,6 @@ std::shared_ptr<const MeasurementModel> FactorGraphCore::planar(
   return std::make_shared<PlanarMotionProjection>(std::move(m));
 }
 
-FgoEpoch FactorGraphCore::newEpoch(double t) {
-  FgoEpoch e;
-  e.t = t;
-  e.k = next_k_++;
-  e.p = atEpoch(state::kP, e.k);
-  e.q = atEpoch(state::kQ, e.k);
-  e.v = atEpoch(state::kV, e.k);
-  e.ba = atEpoch(state::kBa, e.k);
-  e.bg = atEpoch(state::kBg, e.k);
-  e.sv = atEpoch(state::kSv, e.k);
-  e.sw = atEpoch(state::kSw, e.k);
-  e.cd = atEpoch(state::kClockDrift, e.k);
-  return e;
-}
-
-void FactorGraphCore::addNavVariables(const FgoEpoch& e, const NavState& x, double s_v, double s_w,
-                                      double cd) {
-  Eigen::VectorXd q(4);
-  quatToWxyz(x.q_n_b, q.data());
-  w_.addVariable(vectorBlock(e.p), x.p_n_b);
-  w_.addVariable(rotationBlock(e.q), q);
-  w_.addVariable(vectorBlock(e.v), x.v_n_b);
-  w_.addVariable(vectorBlock(e.ba), x.b_a);
-  w_.addVariable(vectorBlock(e.bg), x.b_g);
-  w_.addVariable(vectorBlock(e.sv, 1), Eigen::VectorXd::Constant(1, s_v));
-  w_.addVariable(vectorBlock(e.sw, 1), Eigen::VectorXd::Constant(1, s_w));
-  if (holds(calib_index::kSw)) w_.holdComponents(e.sw, {0});
-  w_.addVariable(vectorBlock(e.cd, 1), Eigen::VectorXd::Constant(1, cd));
-}
-
-NavState FactorGraphCore::nav(const FgoEpoch& e) const {
-  NavState x;
-  x.t = e.t;
-  x.p_n_b = w_.value(e.p);
-  x.q_n_b = quatFromWxyz(w_.value(e.q).data());
-  x.v_n_b = w_.value(e.v);
-  x.b_a = w_.value(e.ba);
-  x.b_g = w_.value(e.bg);
-  return x;
-}
-
 void FactorGraphCore::feedMotion(double t, const Eigen::Vector3d& b_g) {
   const auto after = [&](const auto& v) {
     return std::upper_bound(v.begin(), v.end(), motion_fed_t_,
@@ -147,26 +106,26 @@ void FactorGraphCore::start(const InitialState& init) {
        {e.cd},
        0.0,
        "clock_drift_prior"});
-  if (o_.estimate_p_b_g) {
-    w_.addFactor({std::make_shared<PriorModel>(
-                      std::vector<StateBlock>{vectorBlock(kPbg)}, in_.description.p_b_g,
-                      Eigen::Matrix3d::Identity() * o_.p_b_g_sigma * o_.p_b_g_sigma),
-                  {kPbg},
+  // Optional calibration states, each with an independent prior per component.
+  const auto with_prior = [&](const StateKey& key, const Eigen::VectorXd& mean, double sd) {
+    if (!w_.has(key)) w_.addVariable(vectorBlock(key, static_cast<int>(mean.size())), mean);
+    const StateBlock b = vectorBlock(key, static_cast<int>(mean.size()));
+    const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(mean.size(), mean.size()) * sd * sd;
+    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{b}, mean, P),
+                  {key},
                   0.0,
-                  "lever_prior"});
+                  key.str() + "_prior"});
+  };
+  if (o_.estimate_p_b_g) {
+    with_prior(kPbg, in_.description.p_b_g, o_.p_b_g_sigma);
   } else {
     w_.setConstant(kPbg, true);
   }
-  if (o_.estimate_odometer_delay) {  // about zero, after dataset.yaml's time_offsets
-    w_.addVariable(vectorBlock(state::kTdOdo, 1), Eigen::VectorXd::Zero(1));
-    w_.addFactor(
-        {std::make_shared<PriorModel>(
-             std::vector<StateBlock>{vectorBlock(state::kTdOdo, 1)}, Eigen::VectorXd::Zero(1),
-             Eigen::MatrixXd::Constant(1, 1, std::pow(o_.odometer_delay_sigma, 2))),
-         {state::kTdOdo},
-         0.0,
-         "odometer_delay_prior"});
-  }
+  // The odometer's delay about zero, after dataset.yaml's time_offsets.
+  if (o_.estimate_odometer_delay)
+    with_prior(state::kTdOdo, Eigen::VectorXd::Zero(1), o_.odometer_delay_sigma);
+  if (o_.estimate_gyro_tilt)
+    with_prior(state::kGyroTilt, o_.gyro_tilt_start, o_.gyro_tilt_sigma_deg * kDegToRad);
   feedMotion(e.t, init.x.b_g);
   e.still = motion_.isStatic();
   next_output_ = e.t;
@@ -180,13 +139,20 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
   est.calib.s_w = w_.value(e.sw)[0];
   est.calib.p_b_m = w_.value(kPbm);
   est.calib.q_b_m = quatFromWxyz(w_.value(kQbm).data());
+  std::vector<StateKey> keys{e.sv, e.sw, kPbm, kQbm};
+  if (o_.estimate_odometer_delay) keys.push_back(state::kTdOdo);
+  if (o_.estimate_gyro_tilt) keys.push_back(state::kGyroTilt);
+  const Eigen::MatrixXd C = w_.covariance(keys);
+  est.cov = C.topLeftCorner(8, 8);
+  int next = 8;
   if (o_.estimate_odometer_delay) {
-    const Eigen::MatrixXd C = w_.covariance({e.sv, e.sw, kPbm, kQbm, state::kTdOdo});
-    est.cov = C.topLeftCorner(8, 8);
     est.odometer_delay_s = w_.value(state::kTdOdo)[0];
-    est.odometer_delay_sd_s = std::sqrt(C(8, 8));
-  } else {
-    est.cov = w_.covariance({e.sv, e.sw, kPbm, kQbm});
+    est.odometer_delay_sd_s = std::sqrt(C(next, next));
+    ++next;
+  }
+  if (o_.estimate_gyro_tilt) {
+    est.gyro_tilt = w_.value(state::kGyroTilt);
+    est.gyro_tilt_sd = C.block<2, 2>(next, next).diagonal().cwiseSqrt();
   }
   // A held state stays at the prior: its sigma is the prior's, and nothing correlates with it.
   const Eigen::Matrix<double, 8, 8> prior =
@@ -254,16 +220,19 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   FgoEpoch e = newEpoch(rover.t);
   const double dt = e.t - prev.t;
   const NavState x_prev = nav(prev);
+  const bool tilted = o_.estimate_gyro_tilt;
+  const GyroTilt tilt = tilted ? GyroTilt(w_.value(state::kGyroTilt)) : GyroTilt::Zero();
   auto imu =
       std::make_shared<ImuPreintegration>(in_.description.imu_noise, frame_.gravity_n(x_prev.p_n_b),
-                                          frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g);
+                                          frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g, tilt);
   imu->integrateSamples(in_.imu, prev.t, e.t);
   addNavVariables(e, imu->predict(x_prev), w_.value(prev.sv)[0], w_.value(prev.sw)[0],
                   w_.value(prev.cd)[0]);
-  w_.addFactor({std::make_shared<ImuPreintegrationModel>(imu),
-                {prev.p, prev.q, prev.v, prev.ba, prev.bg, e.p, e.q, e.v, e.ba, e.bg},
-                0.0,
-                tagged("imu", e.k)});
+  std::vector<StateKey> imu_vars{prev.p, prev.q, prev.v, prev.ba, prev.bg,
+                                 e.p,    e.q,    e.v,    e.ba,    e.bg};
+  if (tilted) imu_vars.push_back(state::kGyroTilt);
+  w_.addFactor(
+      {std::make_shared<ImuPreintegrationModel>(imu, tilted), imu_vars, 0.0, tagged("imu", e.k)});
   auto odo = std::make_shared<OdometerPreintegration>(
       odometerPreintegrationNoise(in_.description.odom_noise, o_.models), w_.value(prev.sv)[0],
       w_.value(prev.sw)[0]);

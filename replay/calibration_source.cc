@@ -1,5 +1,6 @@
 #include "replay/calibration_source.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -44,6 +45,16 @@ CalibrationSource fromSummary(const std::string& path) {
     s.calibration.covariance = cov;
     if (f.contains("t_d_odo")) s.odometer_delay_s = f["t_d_odo"].get<double>();
     if (!std::isfinite(s.odometer_delay_s)) throw std::runtime_error("t_d_odo not finite");
+    if (f.contains("gyro_tilt_deg")) {
+      const auto d = f["gyro_tilt_deg"].get<std::vector<double>>();
+      if (d.size() != 2) throw std::runtime_error("gyro_tilt_deg: sizes");
+      s.gyro_tilt = Eigen::Vector2d(d[0], d[1]) * kDegToRad;
+      const auto sd = j["sd"]["gyro_tilt_deg"].get<std::vector<double>>();
+      if (sd.size() != 2) throw std::runtime_error("sd.gyro_tilt_deg: sizes");
+      s.gyro_tilt_sd = std::max(sd[0], sd[1]) * kDegToRad;
+      if (!s.gyro_tilt.allFinite() || !(s.gyro_tilt_sd > 0.0))
+        throw std::runtime_error("gyro_tilt_deg or its sd not finite");
+    }
   } catch (const std::exception& e) {
     throw DataError(path, 0, std::string("bad final calibration or covariance: ") + e.what());
   }
@@ -86,9 +97,12 @@ CalibrationSource readCalibrationSource(const std::string& source, const Calibra
     if (source == "truth" && !in.truth)
       throw std::runtime_error("--calibration truth: the dataset has no truth_calib.yaml");
     CalibrationSource s;
-    s.calibration.mean = source == "truth"
-                             ? in.truth->calib
-                             : readTruthCalibration(source.substr(6) + "/truth_calib.yaml").calib;
+    const TruthCalibration truth =
+        source == "truth" ? *in.truth
+                          : readTruthCalibration(source.substr(6) + "/truth_calib.yaml");
+    s.calibration.mean = truth.calib;
+    s.gyro_tilt = truth.gyro_tilt_deg * kDegToRad;
+    s.gyro_tilt_sd = 1e-7;  // as the truth's covariance above
     s.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
     s.label = source;
     return s;

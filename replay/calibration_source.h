@@ -13,6 +13,10 @@ struct CalibrationSource {
   std::string label;             // what it is, for outputs
   // The odometer's delay a run estimated (summary.json's final.t_d_odo), else 0 [s].
   double odometer_delay_s = 0.0;
+  // The gyro's tilt against the accelerometer (final.gyro_tilt_deg, or the truth's) [rad]; NaN
+  // when the source has none.
+  Eigen::Vector2d gyro_tilt = Eigen::Vector2d::Constant(NAN);
+  double gyro_tilt_sd = 0.0;  // its sigma, the larger axis's [rad]
 };
 
 /// `source`: "<dir>/summary.json" (final values and covariance; the run's output set is checked),

@@ -26,6 +26,9 @@ class ImuErrors {
   /// against: the mean of the gyro triad's and the accelerometer triad's misalignment rotations
   /// (roll and pitch of the extrinsic are seen through both; docs/design.md "IMU axes").
   Eigen::Matrix3d measuringAxes() const { return expSO3(0.5 * (logSO3(R_a_b_) + logSO3(R_g_b_))); }
+  /// The gyro triad's tilt against the accelerometer's (GyroTilt) [rad]: x and y of
+  /// Log(R_g_b R_a_b^T); the two triads lie at +-half of it about the measuring axes.
+  Eigen::Vector2d gyroTilt() const { return logSO3(R_g_b_ * R_a_b_.transpose()).head<2>(); }
 
  private:
   ImuErrorSpec spec_;

@@ -117,6 +117,7 @@ SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& 
 
   out.truth_calib.calib = truth_a;
   out.truth_calib.p_b_g = p_a_g;
+  out.truth_calib.gyro_tilt_deg = imu_errors.gyroTilt() * kRadToDeg;
 
   DatasetDescription& d = out.description;
   d.truth = "truth.csv";

@@ -41,6 +41,8 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.estimate_odometer_delay = flag("estimate_odometer_delay", o.estimate_odometer_delay);
   o.odometer_delay_sigma =
       y.numberOr(s + "odometer_delay_sigma", o.odometer_delay_sigma, 1e-4, 1.0);
+  o.estimate_gyro_tilt = flag("estimate_gyro_tilt", o.estimate_gyro_tilt);
+  o.gyro_tilt_sigma_deg = y.numberOr(s + "gyro_tilt_sigma_deg", o.gyro_tilt_sigma_deg, 1e-4, 10.0);
   o.hold_p_b_m_z = flag("hold_p_b_m_z", o.hold_p_b_m_z);
   o.clock_drift_noise = y.numberOr(s + "clock_drift_noise", o.clock_drift_noise, 0.0, 1e3);
   o.odometer_interval_s = y.numberOr(s + "odometer_interval_s", o.odometer_interval_s, 0.0, 60.0);

@@ -2,6 +2,7 @@
 // defaults, loadable from the "calibration", "models" and "rtk" sections of a giocal YAML config.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 
 #include "common/gnss/code_outlier_check.h"
@@ -66,7 +67,15 @@ struct CalibrationOptions {
   // odometer (its yaw rate is the gyro's).
   bool estimate_odometer_delay = false;
   double odometer_delay_sigma = 0.05;  // its prior 1-sigma about zero [s]
-  bool hold_p_b_m_z = true;            // keep p_b_m.z at its prior (unobservable in planar motion)
+  // Estimate the gyro triad's tilt against the accelerometer triad (GyroTilt, two angles) as a
+  // state: an IMU whose triads lean by hundredths of a degree turns the extrinsic yaw otherwise
+  // (docs/results.md, the field preset).
+  bool estimate_gyro_tilt = false;
+  double gyro_tilt_sigma_deg = 0.1;  // its prior 1-sigma per axis about zero [deg]
+  // Where the tilt starts [rad]: a calibrate run's estimate when dead-reckoning with it. Not a
+  // YAML key.
+  Eigen::Vector2d gyro_tilt_start = Eigen::Vector2d::Zero();
+  bool hold_p_b_m_z = true;  // keep p_b_m.z at its prior (unobservable in planar motion)
   // Every calibration state held at its prior as a consider state (its covariance enters the
   // updates, it is never corrected): dead reckoning with a given calibration. Not a YAML key.
   bool hold_calibration = false;

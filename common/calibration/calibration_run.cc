@@ -153,6 +153,10 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
                {"s_w", sd[1]},
                {"p_b_m", vec(sd.segment<3>(2))},
                {"rpy_b_m_deg", vec(sd.tail<3>())}};
+    if (e.gyro_tilt.allFinite()) {  // estimated (calibration.estimate_gyro_tilt)
+      j["final"]["gyro_tilt_deg"] = {e.gyro_tilt.x() * kRadToDeg, e.gyro_tilt.y() * kRadToDeg};
+      j["sd"]["gyro_tilt_deg"] = {e.gyro_tilt_sd.x() * kRadToDeg, e.gyro_tilt_sd.y() * kRadToDeg};
+    }
     if (std::isfinite(e.odometer_delay_s)) {  // estimated (calibration.estimate_odometer_delay)
       j["final"]["t_d_odo"] = e.odometer_delay_s;
       j["sd"]["t_d_odo"] = e.odometer_delay_sd_s;

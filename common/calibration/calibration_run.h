@@ -33,6 +33,9 @@ struct CalibrationEstimate {
   Eigen::Matrix<double, 8, 8> cov = Eigen::Matrix<double, 8, 8>::Zero();
   // The odometer's delay against the IMU and its 1-sigma, when estimated (else NaN) [s].
   double odometer_delay_s = NAN, odometer_delay_sd_s = NAN;
+  // The gyro triad's tilt against the accelerometer's (GyroTilt) [rad], when estimated.
+  Eigen::Vector2d gyro_tilt = Eigen::Vector2d::Constant(NAN);
+  Eigen::Vector2d gyro_tilt_sd = Eigen::Vector2d::Constant(NAN);
 
   /// 1-sigma of roll, pitch and yaw of R_b_m [rad], mapped from the tangent covariance.
   Eigen::Vector3d rpySigma() const;

@@ -47,8 +47,13 @@ using namespace imu_index;
 
 ImuPreintegration::ImuPreintegration(const ImuNoise& noise, const Eigen::Vector3d& gravity_n,
                                      const Eigen::Vector3d& omega_ie_n, const Eigen::Vector3d& b_a,
-                                     const Eigen::Vector3d& b_g)
-    : noise_(noise), g_n_(gravity_n), w_ie_n_(omega_ie_n), b_a_lin_(b_a), b_g_lin_(b_g) {
+                                     const Eigen::Vector3d& b_g, const GyroTilt& tilt)
+    : noise_(noise),
+      g_n_(gravity_n),
+      w_ie_n_(omega_ie_n),
+      b_a_lin_(b_a),
+      b_g_lin_(b_g),
+      tilt_lin_(tilt) {
   reset();
 }
 
@@ -61,6 +66,7 @@ void ImuPreintegration::reset() {
   dp_t_.setZero();
   cov_.setZero();
   J_bias_.setZero();
+  J_tilt_.setZero();
 }
 
 void ImuPreintegration::integrate(double dt, const Eigen::Vector3d& gyro,
@@ -75,8 +81,13 @@ void ImuPreintegration::integrate(double dt, const Eigen::Vector3d& gyro,
 
 void ImuPreintegration::addStep(const Step& s) {
   const double dt = s.dt, dt2 = dt * dt;
-  const Vec3 w = s.gyro - b_g_lin_;
-  const Vec3 a = s.acc - b_a_lin_;
+  // Into the body frame halfway between the triads (GyroTilt): the rate turned by -d/2, the
+  // specific force by +d/2, to first order (d is a fraction of a degree).
+  const Vec3 d(tilt_lin_.x(), tilt_lin_.y(), 0.0);
+  Vec3 w = s.gyro - b_g_lin_;
+  Vec3 a = s.acc - b_a_lin_;
+  w += 0.5 * w.cross(d);
+  a -= 0.5 * a.cross(d);
   const Vec3 phi = w * dt;
   const Mat3 E = expSO3(phi);
   const Mat3 Jr = rightJacobianSO3(phi);
@@ -123,6 +134,12 @@ void ImuPreintegration::addStep(const Step& s) {
 
   // Bias Jacobians follow the same transition; the bias columns are its input.
   J_bias_ = F.apply<6>(J_bias_, Eigen::Matrix<double, 6, 6>::Identity());
+  // A tilt change acts as the bias changes -dw and -da it makes: dw = [w]x dd / 2,
+  // da = -[a]x dd / 2, on d's x and y.
+  Eigen::Matrix<double, 6, 2> tilt_as_bias;
+  tilt_as_bias.topRows<3>() = 0.5 * skew(a).leftCols<2>();
+  tilt_as_bias.bottomRows<3>() = -0.5 * skew(w).leftCols<2>();
+  J_tilt_ = F.apply<2>(J_tilt_, tilt_as_bias);
 
   // Time moments for the Earth-rotation terms (first order is enough: they scale with 7e-5 rad/s).
   const double tm = dt_sum_ + 0.5 * dt;
@@ -177,23 +194,30 @@ void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, 
   }
 }
 
-Mat3 ImuPreintegration::correctedDeltaR(const Eigen::Vector3d& b_g) const {
-  return dR_ * expSO3(J_bias_.block<3, 3>(kR, 3) * (b_g - b_g_lin_));
+Mat3 ImuPreintegration::correctedDeltaR(const Eigen::Vector3d& b_g,
+                                        const std::optional<GyroTilt>& tilt) const {
+  Vec3 phi = J_bias_.block<3, 3>(kR, 3) * (b_g - b_g_lin_);
+  if (tilt) phi += J_tilt_.middleRows<3>(kR) * (*tilt - tilt_lin_);
+  return dR_ * expSO3(phi);
 }
 
-Vec3 ImuPreintegration::correctedDeltaV(const Eigen::Vector3d& b_a,
-                                        const Eigen::Vector3d& b_g) const {
-  return dv_ + J_bias_.block<3, 3>(kV, 0) * (b_a - b_a_lin_) +
-         J_bias_.block<3, 3>(kV, 3) * (b_g - b_g_lin_);
+Vec3 ImuPreintegration::correctedDeltaV(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                                        const std::optional<GyroTilt>& tilt) const {
+  Vec3 v = dv_ + J_bias_.block<3, 3>(kV, 0) * (b_a - b_a_lin_) +
+           J_bias_.block<3, 3>(kV, 3) * (b_g - b_g_lin_);
+  if (tilt) v += J_tilt_.middleRows<3>(kV) * (*tilt - tilt_lin_);
+  return v;
 }
 
-Vec3 ImuPreintegration::correctedDeltaP(const Eigen::Vector3d& b_a,
-                                        const Eigen::Vector3d& b_g) const {
-  return dp_ + J_bias_.block<3, 3>(kP, 0) * (b_a - b_a_lin_) +
-         J_bias_.block<3, 3>(kP, 3) * (b_g - b_g_lin_);
+Vec3 ImuPreintegration::correctedDeltaP(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                                        const std::optional<GyroTilt>& tilt) const {
+  Vec3 p = dp_ + J_bias_.block<3, 3>(kP, 0) * (b_a - b_a_lin_) +
+           J_bias_.block<3, 3>(kP, 3) * (b_g - b_g_lin_);
+  if (tilt) p += J_tilt_.middleRows<3>(kP) * (*tilt - tilt_lin_);
+  return p;
 }
 
-NavState ImuPreintegration::predict(const NavState& i) const {
+NavState ImuPreintegration::predict(const NavState& i, const std::optional<GyroTilt>& tilt) const {
   // Solves the residual of evaluate() for state j; the Coriolis terms depend on p_j - p_i, so
   // the position equation is solved first (I + T [w]x is inverted exactly).
   const double T = dt_sum_;
@@ -203,18 +227,19 @@ NavState ImuPreintegration::predict(const NavState& i) const {
   j.t = i.t + T;
   j.b_a = i.b_a;
   j.b_g = i.b_g;
-  const Vec3 dP = correctedDeltaP(i.b_a, i.b_g) - skew(w_b) * dp_t_;
-  const Vec3 dV = correctedDeltaV(i.b_a, i.b_g) - skew(w_b) * dv_t_;
+  const Vec3 dP = correctedDeltaP(i.b_a, i.b_g, tilt) - skew(w_b) * dp_t_;
+  const Vec3 dV = correctedDeltaV(i.b_a, i.b_g, tilt) - skew(w_b) * dv_t_;
   const Vec3 rhs_p = R_i * dP + i.v_n_b * T + 0.5 * g_n_ * T * T;
   const Vec3 dp_n = (Mat3::Identity() + T * skew(w_ie_n_)).inverse() * rhs_p;
   j.p_n_b = i.p_n_b + dp_n;
   j.v_n_b = i.v_n_b + g_n_ * T - 2.0 * skew(w_ie_n_) * dp_n + R_i * dV;
-  const Mat3 R_j = expSO3(-w_ie_n_ * T) * R_i * correctedDeltaR(i.b_g);
+  const Mat3 R_j = expSO3(-w_ie_n_ * T) * R_i * correctedDeltaR(i.b_g, tilt);
   j.q_n_b = Eigen::Quaterniond(R_j).normalized();
   return j;
 }
 
-ImuResidual ImuPreintegration::evaluate(const NavState& i, const NavState& j) const {
+ImuResidual ImuPreintegration::evaluate(const NavState& i, const NavState& j,
+                                        const std::optional<GyroTilt>& tilt) const {
   const double T = dt_sum_;
   const Mat3 R_i = i.q_n_b.toRotationMatrix();
   const Mat3 R_j = j.q_n_b.toRotationMatrix();
@@ -228,14 +253,16 @@ ImuResidual ImuPreintegration::evaluate(const NavState& i, const NavState& j) co
   const Vec3 y_v = j.v_n_b - i.v_n_b - g_n_ * T + 2.0 * W * dpij;
   const Mat3 Ew = expSO3(w_ie_n_ * T);
   const Mat3 J_R_bg = J_bias_.block<3, 3>(kR, 3);
-  const Mat3 dR_hat = dR_ * expSO3(J_R_bg * dbg);
+  const Eigen::Matrix<double, 3, 2> J_R_tilt = J_tilt_.middleRows<3>(kR);
+  const Vec3 phi = J_R_bg * dbg + (tilt ? Vec3(J_R_tilt * (*tilt - tilt_lin_)) : Vec3::Zero());
+  const Mat3 dR_hat = dR_ * expSO3(phi);
   const Vec3 r_R = logSO3(dR_hat.transpose() * Rt * Ew * R_j);
   const Mat3 JrInv = rightJacobianInvSO3(r_R);
 
   ImuResidual out;
-  out.r.segment<3>(kP) = Rt * y_p + skew(w_b) * dp_t_ - correctedDeltaP(i.b_a, i.b_g);
+  out.r.segment<3>(kP) = Rt * y_p + skew(w_b) * dp_t_ - correctedDeltaP(i.b_a, i.b_g, tilt);
   out.r.segment<3>(kR) = r_R;
-  out.r.segment<3>(kV) = Rt * y_v + skew(w_b) * dv_t_ - correctedDeltaV(i.b_a, i.b_g);
+  out.r.segment<3>(kV) = Rt * y_v + skew(w_b) * dv_t_ - correctedDeltaV(i.b_a, i.b_g, tilt);
   out.r.segment<3>(kBa) = j.b_a - i.b_a;
   out.r.segment<3>(kBg) = j.b_g - i.b_g;
 
@@ -262,8 +289,12 @@ ImuResidual ImuPreintegration::evaluate(const NavState& i, const NavState& j) co
   out.J_ba_i.block<3, 3>(kV, 0) = -J_bias_.block<3, 3>(kV, 0);
   out.J_bg_i.block<3, 3>(kP, 0) = -J_bias_.block<3, 3>(kP, 3);
   out.J_bg_i.block<3, 3>(kV, 0) = -J_bias_.block<3, 3>(kV, 3);
-  out.J_bg_i.block<3, 3>(kR, 0) =
-      -JrInv * expSO3(r_R).transpose() * rightJacobianSO3(J_R_bg * dbg) * J_R_bg;
+  const Mat3 J_R_phi = -JrInv * expSO3(r_R).transpose() * rightJacobianSO3(phi);
+  out.J_bg_i.block<3, 3>(kR, 0) = J_R_phi * J_R_bg;
+  out.J_tilt.setZero();
+  out.J_tilt.middleRows<3>(kP) = -J_tilt_.middleRows<3>(kP);
+  out.J_tilt.middleRows<3>(kV) = -J_tilt_.middleRows<3>(kV);
+  out.J_tilt.middleRows<3>(kR) = J_R_phi * J_R_tilt;
 
   out.J_ba_i.block<3, 3>(kBa, 0) = -I;
   out.J_ba_j.block<3, 3>(kBa, 0) = I;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "common/imu/imu_sample.h"
@@ -23,7 +24,14 @@ struct ImuResidual {
   Eigen::Matrix<double, 15, 1> r;
   Eigen::Matrix<double, 15, 3> J_p_i, J_q_i, J_v_i, J_ba_i, J_bg_i;
   Eigen::Matrix<double, 15, 3> J_p_j, J_q_j, J_v_j, J_ba_j, J_bg_j;
+  Eigen::Matrix<double, 15, 2> J_tilt;  // with respect to the gyro's tilt (ImuPreintegration)
 };
+
+/// The gyro triad's tilt against the accelerometer triad, (x, y) [rad]: the body frame b lies
+/// halfway between them, the gyro measuring in Exp(+d/2) b and the accelerometer in Exp(-d/2) b,
+/// d = (x, y, 0). A rotation of one triad about the common z axis is left out: it does not show
+/// in the motion of a ground vehicle (docs/results.md, the field preset's yaw).
+using GyroTilt = Eigen::Vector2d;
 
 /// What the motion may do while the IMU is silent: a sample interval longer than
 /// `min_interval_s` is bridged by linear interpolation in steps of at most `step_s`, with extra
@@ -43,7 +51,7 @@ class ImuPreintegration {
   /// gravity_n and omega_ie_n come from the LocalFrame; biases are the linearization point.
   ImuPreintegration(const ImuNoise& noise, const Eigen::Vector3d& gravity_n,
                     const Eigen::Vector3d& omega_ie_n, const Eigen::Vector3d& b_a,
-                    const Eigen::Vector3d& b_g);
+                    const Eigen::Vector3d& b_g, const GyroTilt& tilt = GyroTilt::Zero());
 
   /// Adds a step of dt seconds over which rate and specific force are constant (the caller passes
   /// the mean of the two bounding samples). The mean is exact for constant inputs. The extra
@@ -62,21 +70,29 @@ class ImuPreintegration {
   const Vec3& deltaP() const { return dp_; }
   const Eigen::Vector3d& linBa() const { return b_a_lin_; }
   const Eigen::Vector3d& linBg() const { return b_g_lin_; }
+  const GyroTilt& linTilt() const { return tilt_lin_; }
   /// Covariance of the residual [p, theta, v, b_a, b_g] (15x15).
   const Eigen::Matrix<double, 15, 15>& covariance() const { return cov_; }
   /// d(dp, dtheta, dv)/d(b_a, b_g): rows [p, theta, v], columns [b_a, b_g].
   const Eigen::Matrix<double, 9, 6>& biasJacobian() const { return J_bias_; }
+  /// d(dp, dtheta, dv)/d(gyro tilt): rows [p, theta, v].
+  const Eigen::Matrix<double, 9, 2>& tiltJacobian() const { return J_tilt_; }
 
-  /// Deltas corrected to first order for biases that differ from the linearization point.
-  Mat3 correctedDeltaR(const Eigen::Vector3d& b_g) const;
-  Vec3 correctedDeltaV(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g) const;
-  Vec3 correctedDeltaP(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g) const;
+  /// Deltas corrected to first order for biases (and a gyro tilt) that differ from the
+  /// linearization point; without a tilt, the linearization point's.
+  Mat3 correctedDeltaR(const Eigen::Vector3d& b_g,
+                       const std::optional<GyroTilt>& tilt = std::nullopt) const;
+  Vec3 correctedDeltaV(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                       const std::optional<GyroTilt>& tilt = std::nullopt) const;
+  Vec3 correctedDeltaP(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                       const std::optional<GyroTilt>& tilt = std::nullopt) const;
 
   /// The state j this preintegration predicts from state i (biases carried over).
-  NavState predict(const NavState& i) const;
+  NavState predict(const NavState& i, const std::optional<GyroTilt>& tilt = std::nullopt) const;
 
   /// Residual between states i and j with all Jacobians (see ImuResidual).
-  ImuResidual evaluate(const NavState& i, const NavState& j) const;
+  ImuResidual evaluate(const NavState& i, const NavState& j,
+                       const std::optional<GyroTilt>& tilt = std::nullopt) const;
 
  private:
   struct Step {
@@ -90,6 +106,7 @@ class ImuPreintegration {
   ImuNoise noise_;
   Eigen::Vector3d g_n_, w_ie_n_;
   Eigen::Vector3d b_a_lin_, b_g_lin_;
+  GyroTilt tilt_lin_;
 
   double dt_sum_ = 0.0;
   Mat3 dR_;
@@ -99,6 +116,7 @@ class ImuPreintegration {
   Vec3 dv_t_, dp_t_;
   Eigen::Matrix<double, 15, 15> cov_;
   Eigen::Matrix<double, 9, 6> J_bias_;
+  Eigen::Matrix<double, 9, 2> J_tilt_;
 };
 
 }  // namespace giocal

@@ -202,6 +202,7 @@ TruthCalibration readTruthCalibration(const std::string& path) {
   wrapper["calib"] = y.root();
   t.calib.q_b_m = readRotation(YamlFields(path, wrapper), "calib");
   t.p_b_g = y.vector3("p_b_g", -kMaxLever, kMaxLever);
+  if (y.has("gyro_tilt_deg")) t.gyro_tilt_deg = y.numberList("gyro_tilt_deg", 2);
   return t;
 }
 
@@ -216,6 +217,10 @@ void writeTruthCalibration(const std::string& path, const TruthCalibration& t) {
   emitRotation(out, t.calib.q_b_m);
   out << YAML::Key << "p_b_g" << YAML::Value;
   emitVector(out, t.p_b_g);
+  if (t.gyro_tilt_deg.allFinite()) {
+    out << YAML::Key << "gyro_tilt_deg" << YAML::Value;
+    emitVector(out, t.gyro_tilt_deg);
+  }
   out << YAML::EndMap;
   writeYaml(path, out, "giocal true calibration (m, degrees; q_b_m is [w, x, y, z])");
 }

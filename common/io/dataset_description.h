@@ -73,6 +73,8 @@ struct DatasetDescription {
 struct TruthCalibration {
   OdometerCalibration calib;
   Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();
+  // The gyro triad's tilt against the accelerometer's (GyroTilt, degrees); NaN when not stated.
+  Eigen::Vector2d gyro_tilt_deg = Eigen::Vector2d::Constant(NAN);
 };
 
 /// Throws DataError naming dataset.yaml when the dataset has no raw GNSS (files.rover_obs or

@@ -16,7 +16,12 @@ const std::vector<StateBlock>& ImuPreintegrationModel::blocks() const {
     }
     return b;
   }();
-  return kBlocks;
+  static const std::vector<StateBlock> kWithTilt = [] {
+    std::vector<StateBlock> b = kBlocks;
+    b.push_back(vectorBlock(state::kGyroTilt, 2));
+    return b;
+  }();
+  return with_tilt_ ? kWithTilt : kBlocks;
 }
 
 void ImuPreintegrationModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
@@ -30,11 +35,14 @@ void ImuPreintegrationModel::evaluate(const double* const* params, Eigen::Vector
     s.b_g = vec3At(params[o + 4]);
     return s;
   };
-  const ImuResidual r = pre_->evaluate(state(0), state(5));
+  std::optional<GyroTilt> tilt;
+  if (with_tilt_) tilt = GyroTilt(params[10][0], params[10][1]);
+  const ImuResidual r = pre_->evaluate(state(0), state(5), tilt);
   residual = r.r;
   if (jacobians) {
     *jacobians = {r.J_p_i, r.J_q_i, r.J_v_i, r.J_ba_i, r.J_bg_i,
                   r.J_p_j, r.J_q_j, r.J_v_j, r.J_ba_j, r.J_bg_j};
+    if (with_tilt_) jacobians->push_back(r.J_tilt);
   }
 }
 

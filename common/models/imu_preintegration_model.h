@@ -10,10 +10,12 @@ namespace giocal {
 
 class ImuPreintegrationModel : public MeasurementModel {
  public:
-  explicit ImuPreintegrationModel(std::shared_ptr<const ImuPreintegration> pre)
-      : pre_(std::move(pre)) {}
+  /// `with_tilt`: the gyro triad's tilt (GyroTilt) is a block of the model too.
+  explicit ImuPreintegrationModel(std::shared_ptr<const ImuPreintegration> pre,
+                                  bool with_tilt = false)
+      : pre_(std::move(pre)), with_tilt_(with_tilt) {}
   std::string name() const override { return "imu_preintegration"; }
-  /// p, q, v, b_a, b_g of state i, then of state j ("@i", "@j").
+  /// p, q, v, b_a, b_g of state i, then of state j ("@i", "@j")[, the gyro tilt].
   const std::vector<StateBlock>& blocks() const override;
   int residualSize() const override { return 15; }
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
@@ -22,6 +24,7 @@ class ImuPreintegrationModel : public MeasurementModel {
 
  private:
   std::shared_ptr<const ImuPreintegration> pre_;
+  bool with_tilt_ = false;
 };
 
 }  // namespace giocal

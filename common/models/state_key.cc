@@ -28,6 +28,8 @@ const char* quantityName(Quantity q) {
       return "p_b_g";
     case Quantity::kOdometerDelay:
       return "t_d_odo";
+    case Quantity::kGyroTilt:
+      return "gyro_tilt";
     case Quantity::kClockDrift:
       return "cdt_dot";
     case Quantity::kAmbiguity:

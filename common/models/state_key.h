@@ -22,6 +22,7 @@ enum class Quantity : std::uint8_t {
   kOdometerMount,  // q_b_m
   kAntennaLever,   // p_b_g [m]
   kOdometerDelay,  // t_d_odo [s], the odometer's delay against the IMU
+  kGyroTilt,       // the gyro triad's tilt against the accelerometer's (x, y) [rad]
   kClockDrift,     // cdt_dot [m/s]
   kAmbiguity,      // N, a single-differenced carrier-phase ambiguity [cycles]
 };
@@ -74,6 +75,7 @@ inline const StateKey kPbm{Quantity::kOdometerLever};
 inline const StateKey kQbm{Quantity::kOdometerMount};
 inline const StateKey kPbg{Quantity::kAntennaLever};
 inline const StateKey kTdOdo{Quantity::kOdometerDelay};
+inline const StateKey kGyroTilt{Quantity::kGyroTilt};
 inline const StateKey kClockDrift{Quantity::kClockDrift};
 }  // namespace state
 

@@ -79,6 +79,42 @@ TEST(ImuPropagation, PerSampleEqualsOneShotPreintegration) {
   EXPECT_EQ(s.covariance().row(0).tail(15).norm(), 0.0);
 }
 
+// With the gyro's tilt estimated, the propagation carries its uncertainty into the navigation
+// state through d x_j / d tilt: from a state known exactly but for the tilt, the cross-covariance
+// of position, attitude and velocity with the tilt is that derivative (numeric here) times the
+// tilt's variance.
+TEST(ImuPropagation, TheGyroTiltEntersThroughItsJacobian) {
+  const ImuCase su;
+  StateRegistry s;
+  su.fill(s);
+  const GyroTilt t0(1e-3, -2e-3);
+  const double var = 1e-6;
+  s.add(vectorBlock(state::kGyroTilt, 2), t0, Eigen::Matrix2d::Identity() * var);
+  ImuPreintegration step(su.noise, su.frame.gravity_n(), su.frame.omega_ie_n(), su.x0.b_a,
+                         su.x0.b_g, t0);
+  step.integrateSamples(su.samples, 0.0, 1.0);
+  propagateImu(s, step);
+  const double h = 1e-6;
+  for (int k = 0; k < 2; ++k) {
+    GyroTilt up = t0, down = t0;
+    up[k] += h;
+    down[k] -= h;
+    const NavState a = step.predict(su.x0, up), b = step.predict(su.x0, down);
+    Eigen::Matrix<double, 9, 1> d;
+    d << (a.p_n_b - b.p_n_b) / (2 * h), boxMinus(a.q_n_b, b.q_n_b) / (2 * h),
+        (a.v_n_b - b.v_n_b) / (2 * h);
+    const int col = s.offset(state::kGyroTilt) + k;
+    Eigen::Matrix<double, 9, 1> got;
+    for (int r = 0; r < 3; ++r) {
+      got[r] = s.covariance()(s.offset(state::kP) + r, col);
+      got[3 + r] = s.covariance()(s.offset(state::kQ) + r, col);
+      got[6 + r] = s.covariance()(s.offset(state::kV) + r, col);
+    }
+    EXPECT_GT(d.norm(), 1e-3) << "tilt " << k;
+    EXPECT_LT((got - d * var).norm(), 1e-5 * d.norm() * var) << "tilt " << k;
+  }
+}
+
 TEST(ImuPropagation, CarriesCrossCovarianceWithOtherVariables) {
   const ImuCase su;
   StateRegistry s;

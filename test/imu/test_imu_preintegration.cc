@@ -182,6 +182,56 @@ TEST(ImuPreintegration, BiasCorrectionIsFirstOrderAccurate) {
             0.01 * logSO3(pre.deltaR().transpose() * re.deltaR()).norm());
 }
 
+TEST(ImuPreintegration, GyroTiltCorrectionIsFirstOrderAccurate) {
+  // The same samples integrated about a tilt 0.5 degrees away: the tilt Jacobian must predict the
+  // change of every delta to first order, from a tilted linearization point as from zero.
+  std::mt19937 rng(6);
+  Fixture f;
+  const GyroTilt t0(0.002, -0.001), dt(0.006, -0.005);
+  ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(),
+                        Vec3::Zero(), t0);
+  ImuPreintegration re(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(),
+                       Vec3::Zero(), t0 + dt);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 gyro = randomVec(rng, 0.8), acc = randomVec(rng, 2.0) + Vec3(0, 0, 9.8);
+    pre.integrate(0.01, gyro, acc);
+    re.integrate(0.01, gyro, acc);
+  }
+  const double change_v = (re.deltaV() - pre.deltaV()).norm();
+  const double change_p = (re.deltaP() - pre.deltaP()).norm();
+  const double change_r = logSO3(pre.deltaR().transpose() * re.deltaR()).norm();
+  EXPECT_GT(change_v, 1e-3);
+  EXPECT_GT(change_r, 1e-4);
+  const Vec3 zero = Vec3::Zero();
+  EXPECT_LT((pre.correctedDeltaV(zero, zero, t0 + dt) - re.deltaV()).norm(), 0.02 * change_v);
+  EXPECT_LT((pre.correctedDeltaP(zero, zero, t0 + dt) - re.deltaP()).norm(), 0.02 * change_p);
+  EXPECT_LT(logSO3(pre.correctedDeltaR(zero, t0 + dt).transpose() * re.deltaR()).norm(),
+            0.02 * change_r);
+  // Without a tilt the deltas are the linearization point's.
+  EXPECT_EQ(pre.correctedDeltaV(zero, zero), pre.deltaV());
+}
+
+TEST(ImuPreintegration, GyroTiltJacobianOfTheResidualMatchesNumericDifferentiation) {
+  std::mt19937 rng(12);
+  Fixture f;
+  for (int trial = 0; trial < 5; ++trial) {
+    const GyroTilt lin(0.001 * trial, -0.002);
+    ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), randomVec(rng, 0.05),
+                          randomVec(rng, 0.01), lin);
+    for (int k = 0; k < 50; ++k)
+      pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
+    const NavState si = randomState(rng), sj = randomState(rng);
+    const GyroTilt tilt = lin + GyroTilt(0.003, 0.002);  // away from the linearization point
+    const auto fn = [&](const Eigen::VectorXd& d) -> Eigen::VectorXd {
+      return pre.evaluate(si, sj, GyroTilt(tilt + d)).r;
+    };
+    EXPECT_LT(
+        test::relativeDifference(pre.evaluate(si, sj, tilt).J_tilt, test::numericJacobian(fn, 2)),
+        1e-6)
+        << "trial " << trial;
+  }
+}
+
 TEST(ImuPreintegration, CovarianceMatchesMonteCarlo) {
   // Integrates the same motion with sampled white noise and bias random walk many times; the sample
   // covariance of (dp, dtheta, dv) must match the propagated one.

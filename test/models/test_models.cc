@@ -40,6 +40,7 @@ std::vector<Eigen::VectorXd> randomValues(const MeasurementModel& m) {
     if (q == Quantity::kSpeedScale || q == Quantity::kYawRateScale) scale = 0.05;
     if (q == Quantity::kAccelBias || q == Quantity::kGyroBias) scale = 0.02;
     if (q == Quantity::kOdometerDelay) scale = 0.05;
+    if (q == Quantity::kGyroTilt) scale = 0.01;
     values.push_back(test::randomBlockValue(b, scale, rng));
   }
   return values;
@@ -115,6 +116,7 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
                                           Eigen::Vector3d(0.01, 0.02, 0.05).asDiagonal()),
           std::make_shared<NhcModel>(Vec3(0.1, -0.2, 0.5), 0.05),
           std::make_shared<ImuPreintegrationModel>(imu),
+          std::make_shared<ImuPreintegrationModel>(imu, true),  // with the gyro's tilt
           std::make_shared<OdometerPreintegrationModel>(odo),
           std::make_shared<OdometerPreintegrationModel>(odo, true),  // a speed-only odometer
           std::make_shared<OdometerPreintegrationModel>(odo, false, rates),  // with the delay

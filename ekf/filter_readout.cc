@@ -1,0 +1,46 @@
+// CalibrationFilter's navigation read-out and reset: the state now, the trajectory predicted
+// between updates, and moving the pose to a reference (dead reckoning's start).
+#include "common/math/rotation.h"
+#include "ekf/calibration_filter.h"
+#include "ekf/imu_propagation.h"
+
+namespace giocal {
+
+NavState CalibrationFilter::nav() const {
+  NavState x = navState(s_);
+  x.t = t_;
+  return x;
+}
+
+TruthSample CalibrationFilter::trajectorySample(double t) {
+  NavState x = nav();
+  t = std::min(t, imu_.back().t);
+  if (t > t_) {
+    x = pendingTo(t).predict(x);  // mean prediction; the covariance moves at the next update
+  } else {
+    t = t_;
+  }
+  return truthRow(frame_, x, t);
+}
+
+void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vector3d& v_n_b,
+                                 const Eigen::Quaterniond& q_n_b) {
+  NavState x = navState(s_);
+  const Mat3 dR = q_n_b.toRotationMatrix() * x.q_n_b.toRotationMatrix().transpose();
+  const auto rotate = [&](const StateKey& key) {
+    const Quat q = quatFromWxyz(s_.value(key).data());
+    quatToWxyz(Quat(dR * q.toRotationMatrix()).normalized(), s_.value(key).data());
+  };
+  if (s_.has(kOdoP)) {
+    s_.value(kOdoP) = p_n_b + dR * (s_.value(kOdoP) - x.p_n_b);
+    rotate(kOdoQ);
+  }
+  if (s_.has(kHeadingClone)) rotate(kHeadingClone);
+  x.p_n_b = p_n_b;
+  x.v_n_b = v_n_b;
+  x.q_n_b = q_n_b;
+  setNavState(s_, x);
+  pending_.reset();
+}
+
+}  // namespace giocal
