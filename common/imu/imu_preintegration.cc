@@ -201,20 +201,23 @@ Mat3 ImuPreintegration::correctedDeltaR(const Eigen::Vector3d& b_g,
   return dR_ * expSO3(phi);
 }
 
+Vec3 ImuPreintegration::corrected(int row, const Vec3& delta, const Eigen::Vector3d& b_a,
+                                  const Eigen::Vector3d& b_g,
+                                  const std::optional<GyroTilt>& tilt) const {
+  Vec3 out = delta + J_bias_.block<3, 3>(row, 0) * (b_a - b_a_lin_) +
+             J_bias_.block<3, 3>(row, 3) * (b_g - b_g_lin_);
+  if (tilt) out += J_tilt_.middleRows<3>(row) * (*tilt - tilt_lin_);
+  return out;
+}
+
 Vec3 ImuPreintegration::correctedDeltaV(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
                                         const std::optional<GyroTilt>& tilt) const {
-  Vec3 v = dv_ + J_bias_.block<3, 3>(kV, 0) * (b_a - b_a_lin_) +
-           J_bias_.block<3, 3>(kV, 3) * (b_g - b_g_lin_);
-  if (tilt) v += J_tilt_.middleRows<3>(kV) * (*tilt - tilt_lin_);
-  return v;
+  return corrected(kV, dv_, b_a, b_g, tilt);
 }
 
 Vec3 ImuPreintegration::correctedDeltaP(const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
                                         const std::optional<GyroTilt>& tilt) const {
-  Vec3 p = dp_ + J_bias_.block<3, 3>(kP, 0) * (b_a - b_a_lin_) +
-           J_bias_.block<3, 3>(kP, 3) * (b_g - b_g_lin_);
-  if (tilt) p += J_tilt_.middleRows<3>(kP) * (*tilt - tilt_lin_);
-  return p;
+  return corrected(kP, dp_, b_a, b_g, tilt);
 }
 
 NavState ImuPreintegration::predict(const NavState& i, const std::optional<GyroTilt>& tilt) const {

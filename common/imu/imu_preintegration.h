@@ -102,6 +102,9 @@ class ImuPreintegration {
   };
   void reset();
   void addStep(const Step& s);
+  /// A translational delta (rows `row` of the Jacobians) corrected to first order.
+  Vec3 corrected(int row, const Vec3& delta, const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
+                 const std::optional<GyroTilt>& tilt) const;
 
   ImuNoise noise_;
   Eigen::Vector3d g_n_, w_ie_n_;
