@@ -45,6 +45,14 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
         << std::setw(12) << e.odometer_delay_s << " +- " << std::setw(8) << e.odometer_delay_sd_s
         << "   (the odometer's delay against the IMU)\n";
   }
+  if (e.gyro_tilt.allFinite()) {
+    for (int k = 0; k < 2; ++k) {
+      out << "  " << std::left << std::setw(10) << (k == 0 ? "tilt.x deg" : "tilt.y deg")
+          << std::right << std::setprecision(4) << std::setw(12) << e.gyro_tilt[k] * kRadToDeg
+          << " +- " << std::setw(8) << e.gyro_tilt_sd[k] * kRadToDeg
+          << (k == 0 ? "   (the gyro triad's tilt against the accelerometer's)\n" : "\n");
+    }
+  }
   if (truth) out << "  NEES (7 observable states) " << std::setprecision(2) << err.nees7 << "\n";
   out << "  p_b_m.z: " << run.p_b_m_z << "\n";
   out << std::setprecision(1) << "  GNSS epochs " << run.gnss_epochs << ", fix rate "
