@@ -351,7 +351,7 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
     if (converged || dx.norm() <= 1e-8 * (std::sqrt(x_norm) + 1e-8)) break;
     // Whether another step is worth taking, asked first of the factorization just made (the
     // Hessian barely moves over a step this late): if that step gains less than the tolerance,
-    // the solve ends and the same factorization serves the covariances. Most epochs end here,
+    // the solve ends and the same factorization serves the covariances. Many epochs end here,
     // one factorization sooner.
     auto chord = std::make_shared<Linearization>(*previous);
     chord->b = lin->b;
