@@ -211,8 +211,9 @@ void CalibrationFilter::feedMotion(double t) {
 const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
   if (!pending_) {
     const NavState x = navState(s_);
-    const GyroTilt tilt =
-        s_.has(state::kGyroTilt) ? GyroTilt(s_.value(state::kGyroTilt)) : GyroTilt::Zero();
+    const std::optional<GyroTilt> tilt = s_.has(state::kGyroTilt)
+                                             ? std::optional<GyroTilt>(s_.value(state::kGyroTilt))
+                                             : std::nullopt;
     pending_ = std::make_unique<ImuPreintegration>(dataset_.imu_noise, frame_.gravity_n(x.p_n_b),
                                                    frame_.omega_ie_n(), x.b_a, x.b_g, tilt);
     pending_t_ = t_;

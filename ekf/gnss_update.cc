@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 
 #include "common/gnss/doppler.h"
@@ -27,6 +28,32 @@ std::vector<StateKey> modelKeys(const MeasurementModel& m, const std::vector<Sta
   std::vector<StateKey> keys = first;
   for (size_t k = first.size(); k < m.blocks().size(); ++k) keys.push_back(m.blocks()[k].key);
   return keys;
+}
+
+/// The rows that touch no ambiguity state (code rows, phase rows between known ambiguities), read
+/// from H (no column beyond the pose's `pose_cols`), less any correlated in R with a row that does:
+/// compressRows takes such a closed set only.
+std::vector<int> poseOnlyRows(const MeasurementRows& lin, const std::vector<int>& pose_cols) {
+  const auto m = static_cast<size_t>(lin.H.rows());
+  std::vector<bool> pose(static_cast<size_t>(lin.H.cols()), false), in(m, true);
+  for (const int j : pose_cols) pose[static_cast<size_t>(j)] = true;
+  for (long j = 0; j < lin.H.cols(); ++j) {
+    if (pose[static_cast<size_t>(j)]) continue;
+    for (size_t k = 0; k < m; ++k) {
+      if (lin.H(long(k), j) != 0.0) in[k] = false;
+    }
+  }
+  for (size_t k = 0; k < m; ++k) {
+    if (in[k]) continue;
+    for (size_t j = 0; j < m; ++j) {
+      if (in[j] && lin.R(long(j), long(k)) != 0.0) in[j] = false;
+    }
+  }
+  std::vector<int> out;
+  for (size_t k = 0; k < m; ++k) {
+    if (in[k]) out.push_back(static_cast<int>(k));
+  }
+  return out;
 }
 
 }  // namespace
@@ -65,7 +92,9 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
 
   // SD ambiguities: random walk, restart after slips, add new, drop unseen.
   const double qa = options_.ambiguity_noise * options_.ambiguity_noise * dt;
-  for (const StateKey& n : ambiguities_) s.covariance()(s.offset(n), s.offset(n)) += qa;
+  for (const StateKey& n : ambiguities_) {
+    if (const int i = s.offset(n); i >= 0) s.covariance()(i, i) += qa;
+  }
   std::set<StateKey> seen;
   std::map<StateKey, const SdAmbiguity*> by_key;
   for (const SdAmbiguity& a : ep.ambiguities) {
@@ -129,13 +158,14 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     }
   }
   if (!rows.empty()) {
-    // The code rows touch only the antenna's pose (9 columns): the same information in 9 rows
-    // makes the update of a state with tens of ambiguities about 40 % cheaper.
-    std::vector<int> code;
-    for (size_t k = 0; k < rows.size(); ++k) {
-      if (!rows[k].phase) code.push_back(static_cast<int>(k));
+    // The code rows, and the phase rows whose ambiguities are known, touch only the antenna's
+    // pose (9 columns): the same information in 9 rows makes the update several times cheaper.
+    std::vector<int> pose_cols;
+    for (const StateKey& key : nav_keys) {
+      for (int k = 0; k < 3; ++k) pose_cols.push_back(s.offset(key) + k);
     }
-    rep.used = f.updateLinearized(compressRows(lin, code), INFINITY).accepted;
+    rep.used =
+        f.updateLinearized(compressRows(lin, poseOnlyRows(lin, pose_cols)), INFINITY).accepted;
     rep.dd_rows = static_cast<int>(rows.size());
   }
 
@@ -197,54 +227,103 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   StateRegistry& s = f.state();
   const long na = static_cast<long>(phase_rows.size());
   if (na < options_.lambda.min_fixed) return;
-  // DD ambiguity k = N(sat) - N(ref): its mean and covariance from the states' entries.
+  // DD ambiguity k = N(sat) - N(ref): its mean and covariance from the states' entries. Where a
+  // row's reference is not known but another SD ambiguity of its group is, the pair is taken
+  // against that one (the same DD space): against an estimated reference, every DD of a group
+  // whose other SD ambiguities are known carries the reference's variance alone, and their
+  // covariance is singular.
+  std::map<std::pair<SatId, char>, SatId> known_ref;  // (reference, band) -> a known satellite
+  for (const DdObservation& o : phase_rows) {
+    const auto group = std::make_pair(o.ref, o.band);
+    if (!known_ref.count(group) && !s.isKnown(ambiguityKey(o.ref, o.band)) &&
+        s.isKnown(ambiguityKey(o.sat, o.band))) {
+      known_ref[group] = o.sat;
+    }
+  }
+  std::vector<std::pair<StateKey, StateKey>> keys_k;
   std::vector<std::pair<int, int>> pairs;
   Eigen::VectorXd a(na);
   std::vector<double> el;
   for (long k = 0; k < na; ++k) {
     const DdObservation& o = phase_rows[static_cast<size_t>(k)];
-    const StateKey ns = ambiguityKey(o.sat, o.band), nr = ambiguityKey(o.ref, o.band);
-    pairs.push_back({s.offset(ns), s.offset(nr)});
-    a[k] = s.value(ns)[0] - s.value(nr)[0];
-    el.push_back(ep.geometry[static_cast<size_t>(o.sat_index)].el);
+    SatId sat = o.sat, ref = o.ref;
+    int sat_index = o.sat_index;
+    if (const auto it = known_ref.find({o.ref, o.band}); it != known_ref.end()) {
+      ref = it->second;
+      if (sat == ref) {  // this row's satellite is the new reference: the old one takes its place
+        sat = o.ref;
+        sat_index = o.ref_index;
+      }
+    }
+    keys_k.push_back({ambiguityKey(sat, o.band), ambiguityKey(ref, o.band)});
+    const std::vector<BlockBinding> b = s.bind({keys_k.back().first, keys_k.back().second});
+    pairs.push_back({b[0].error_offset, b[1].error_offset});
+    a[k] = *b[0].value - *b[1].value;
+    el.push_back(ep.geometry[static_cast<size_t>(sat_index)].el);
   }
   const Eigen::MatrixXd Qa = ddAmbiguityCovariance(s.covariance(), pairs);
-  // Every DD ambiguity already held at its integer: LAMBDA would return those integers and the
-  // filter would not move (below), so the search is not run. Most epochs of a drive are such.
+  // A DD ambiguity already held at its integer (its variance at the hold's level or zero, where
+  // both SD ambiguities are known) is fixed: LAMBDA searches the others, as it would have found
+  // the held ones' integers among them; a known pair's zero variance would make the search's
+  // covariance singular. When all are held (most epochs of a drive) no search is run.
   const double held_variance = 4.0 * options_.fix_sigma_cycles * options_.fix_sigma_cycles;
-  bool all_held = true;
-  for (long k = 0; k < na && all_held; ++k) {
-    all_held = Qa(k, k) < held_variance && std::abs(a[k] - std::round(a[k])) < kHeldOffsetCycles;
+  std::vector<int> floating, held_pairs;
+  for (long k = 0; k < na; ++k) {
+    const bool held =
+        Qa(k, k) < held_variance && std::abs(a[k] - std::round(a[k])) < kHeldOffsetCycles;
+    (held ? held_pairs : floating).push_back(static_cast<int>(k));
   }
-  if (all_held) {
+  const auto n_held = static_cast<int>(held_pairs.size());
+  if (floating.empty()) {
     rep.fixed = true;
-    rep.fixed_ambiguities = static_cast<int>(na);
+    rep.fixed_ambiguities = n_held;
     rep.ratio = INFINITY;
     return;
   }
-  const std::vector<int> drop = lowestElevationFirst(el);
+  const auto nf = static_cast<long>(floating.size());
+  Eigen::VectorXd a_f(nf);
+  Eigen::MatrixXd Q_f(nf, nf);
+  std::vector<double> el_f;
+  for (long i = 0; i < nf; ++i) {
+    a_f[i] = a[floating[size_t(i)]];
+    el_f.push_back(el[size_t(floating[size_t(i)])]);
+    for (long j = 0; j < nf; ++j) Q_f(i, j) = Qa(floating[size_t(i)], floating[size_t(j)]);
+  }
+  LambdaOptions lambda = options_.lambda;
+  lambda.min_fixed = std::max(1, lambda.min_fixed - n_held);  // the held count towards it
   AmbiguityFix fix;
   try {
-    fix = giocal::resolveAmbiguities(a, Qa, drop, options_.lambda);
+    fix = giocal::resolveAmbiguities(a_f, Q_f, lowestElevationFirst(el_f), lambda);
   } catch (const std::invalid_argument&) {
-    return;  // float covariance not positive definite: no fix this epoch
+    fix = {};  // float covariance not positive definite: none of these fixed this epoch
   }
   rep.ratio = fix.ratio;
-  if (!fix.fixed) return;
-
-  // Fixes already held (their DD variance is at the constraint's level) need no new update.
-  std::vector<DdAmbiguityFix> fixes;
-  for (size_t k = 0; k < fix.indices.size(); ++k) {
-    const int i = fix.indices[k];
-    if (Qa(i, i) < held_variance) continue;
-    const DdObservation& o = phase_rows[static_cast<size_t>(i)];
-    fixes.push_back({ambiguityKey(o.sat, o.band), ambiguityKey(o.ref, o.band),
-                     fix.values[static_cast<long>(k)]});
-  }
-  rep.fixed_ambiguities = static_cast<int>(fix.indices.size());
-  if (fixes.empty()) {
-    rep.fixed = true;
+  if (!fix.fixed) {
+    // Partial fixing ends with the held ones alone, as it did when they were searched too.
+    if (n_held >= options_.lambda.min_fixed) {
+      rep.fixed = true;
+      rep.fixed_ambiguities = n_held;
+      rep.ratio = INFINITY;
+    }
     return;
+  }
+
+  std::vector<DdAmbiguityFix> fixes;
+  std::vector<int> fixed_pairs = held_pairs;
+  for (size_t k = 0; k < fix.indices.size(); ++k) {
+    const int i = floating[static_cast<size_t>(fix.indices[k])];
+    fixed_pairs.push_back(i);
+    fixes.push_back(
+        {keys_k[size_t(i)].first, keys_k[size_t(i)].second, fix.values[static_cast<long>(k)]});
+  }
+  rep.fixed_ambiguities = static_cast<int>(fixed_pairs.size());
+  // Held fixes are known from then on: the state is conditioned on their SD ambiguities, which
+  // leave the covariance (with a group's reference this also pins the SD common mode, which no
+  // DD row sees). Later DD rows between known ambiguities touch the pose only.
+  std::vector<StateKey> held;
+  for (const int i : fixed_pairs) {
+    held.push_back(keys_k[size_t(i)].first);
+    held.push_back(keys_k[size_t(i)].second);
   }
   // Apply the fixes, then keep them only if the fixed solution fits every DD phase row.
   const StateRegistry saved = s;
@@ -261,6 +340,7 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
     ++rep.rejected_rows;
     return;
   }
+  s.condition(held);
   rep.fixed = true;
 }
 

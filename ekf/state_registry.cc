@@ -27,7 +27,14 @@ void StateRegistry::add(const StateBlock& block, const Eigen::VectorXd& value,
 }
 
 void StateRegistry::remove(const StateKey& key) {
-  const int off = offset(key), m = block(key).tangentSize(), n = dim();
+  const int off = offset(key);
+  if (off >= 0) dropColumns(off, block(key).tangentSize());
+  vars_.erase(key);
+  if (off >= 0) order_.erase(std::find(order_.begin(), order_.end(), key));
+}
+
+void StateRegistry::dropColumns(int off, int m) {
+  const int n = dim();
   Eigen::MatrixXd P(n - m, n - m);
   const int tail = n - off - m;
   P.topLeftCorner(off, off) = P_.topLeftCorner(off, off);
@@ -35,10 +42,28 @@ void StateRegistry::remove(const StateKey& key) {
   P.bottomLeftCorner(tail, off) = P_.bottomLeftCorner(tail, off);
   P.bottomRightCorner(tail, tail) = P_.bottomRightCorner(tail, tail);
   P_ = P;
-  vars_.erase(key);
-  order_.erase(std::find(order_.begin(), order_.end(), key));
   for (auto& [k, v] : vars_) {
     if (v.offset > off) v.offset -= m;
+  }
+}
+
+void StateRegistry::condition(const std::vector<StateKey>& keys) {
+  for (const StateKey& key : keys) {
+    const int off = offset(key);
+    if (off < 0) continue;
+    if (block(key).kind != BlockKind::kVector || block(key).size != 1) {
+      throw std::invalid_argument("state variable '" + key.str() +
+                                  "': only scalars are conditioned");
+    }
+    // One exact scalar measurement at a time: the sequence equals the joint conditioning.
+    const double pkk = P_(off, off);
+    if (pkk > 0.0) {
+      const Eigen::VectorXd p = P_.col(off);
+      P_.noalias() -= (p / pkk) * p.transpose();
+    }
+    dropColumns(off, 1);
+    vars_.at(key).offset = -1;
+    order_.erase(std::find(order_.begin(), order_.end(), key));
   }
 }
 
@@ -79,12 +104,14 @@ Eigen::VectorXd& StateRegistry::value(const StateKey& key) {
 
 Eigen::MatrixXd StateRegistry::marginal(const StateKey& key) const {
   const int m = block(key).tangentSize(), off = offset(key);
+  if (off < 0) throw std::invalid_argument("state variable '" + key.str() + "' is known");
   return P_.block(off, off, m, m);
 }
 
 void StateRegistry::correct(const Eigen::VectorXd& dx) {
   if (dx.size() != dim()) throw std::invalid_argument("correction size differs from the state");
   for (auto& [key, v] : vars_) {
+    if (v.offset < 0) continue;
     if (v.block.kind == BlockKind::kRotation) {
       const Quat q = boxPlus(quatFromWxyz(v.value.data()), dx.segment<3>(v.offset));
       quatToWxyz(q, v.value.data());
@@ -95,7 +122,8 @@ void StateRegistry::correct(const Eigen::VectorXd& dx) {
 }
 
 void StateRegistry::setValues(const StateRegistry& other) {
-  if (other.order_ != order_) throw std::invalid_argument("StateRegistry: different variables");
+  if (other.order_ != order_ || other.vars_.size() != vars_.size())
+    throw std::invalid_argument("StateRegistry: different variables");
   auto from = other.vars_.begin();
   for (auto& entry : vars_) (entry.second.value = (from++)->second.value);
 }
@@ -103,6 +131,7 @@ void StateRegistry::setValues(const StateRegistry& other) {
 Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
   Eigen::VectorXd dx(dim());
   for (const auto& [key, v] : vars_) {
+    if (v.offset < 0) continue;
     const Eigen::VectorXd& b = base.value(key);
     if (v.block.kind == BlockKind::kRotation) {
       dx.segment<3>(v.offset) = boxMinus(quatFromWxyz(v.value.data()), quatFromWxyz(b.data()));

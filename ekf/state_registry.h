@@ -1,6 +1,6 @@
 // StateRegistry: the EKF's error state as keyed variables that know their covariance index (the
-// OpenVINS Type/StateHelper idea): add with a prior, remove (marginalize), correct by box-plus,
-// and bind to measurement models by StateKey.
+// OpenVINS Type/StateHelper idea): add with a prior, remove (marginalize), condition on a value
+// (the variable is then known), correct by box-plus, and bind to measurement models by StateKey.
 #pragma once
 
 #include <Eigen/Core>
@@ -18,17 +18,26 @@ class StateRegistry {
   /// and its covariance (tangent), uncorrelated with the rest. Throws if the key exists.
   void add(const StateBlock& block, const Eigen::VectorXd& value,
            const Eigen::MatrixXd& covariance);
-  /// Removes a variable and its rows and columns (marginalization of a Gaussian).
+  /// Removes a variable, estimated (its rows and columns go: marginalization of a Gaussian) or
+  /// known.
   void remove(const StateKey& key);
+  /// Conditions the state on the variables' current values, as an exact measurement of each
+  /// would: the others' covariance becomes P_rr - P_rk P_kk^-1 P_kr, and the variables leave the
+  /// covariance and stay as known values that models bind as constants. A variable whose
+  /// variance is not positive is taken out without conditioning. Vector variables of size 1 only.
+  void condition(const std::vector<StateKey>& keys);
   /// Adds `copy` as a stochastic clone of `key`: same value, fully correlated with it.
   void clone(const StateKey& key, const StateKey& copy);
 
+  /// True for an estimated or a known variable.
   bool has(const StateKey& key) const { return vars_.count(key) != 0; }
+  bool isKnown(const StateKey& key) const { return has(key) && offset(key) < 0; }
+  /// The variable's first column in the covariance; -1 for a known variable.
   int offset(const StateKey& key) const;
   const StateBlock& block(const StateKey& key) const;
   const Eigen::VectorXd& value(const StateKey& key) const;
   Eigen::VectorXd& value(const StateKey& key);
-  std::vector<StateKey> keys() const { return order_; }  // in state order
+  std::vector<StateKey> keys() const { return order_; }  // estimated ones, in state order
 
   int dim() const { return static_cast<int>(P_.rows()); }
   const Eigen::MatrixXd& covariance() const { return P_; }
@@ -43,15 +52,18 @@ class StateRegistry {
   /// The correction that takes `base` (same variables) to this state: this = base (+) dx.
   Eigen::VectorXd minus(const StateRegistry& base) const;
 
-  /// Bindings of a model's blocks to the variables `keys[k]` (throws for an unknown key).
+  /// Bindings of a model's blocks to the variables `keys[k]` (throws for an unknown key); a known
+  /// variable binds with error offset -1, so it enters the model as a constant.
   std::vector<BlockBinding> bind(const std::vector<StateKey>& keys) const;
 
  private:
   struct Variable {
     StateBlock block;
     Eigen::VectorXd value;
-    int offset = 0;
+    int offset = 0;  // -1: known
   };
+  /// Drops the rows and columns [off, off + m) of the covariance.
+  void dropColumns(int off, int m);
   std::map<StateKey, Variable> vars_;
   std::vector<StateKey> order_;
   Eigen::MatrixXd P_;

@@ -221,7 +221,8 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   const double dt = e.t - prev.t;
   const NavState x_prev = nav(prev);
   const bool tilted = o_.estimate_gyro_tilt;
-  const GyroTilt tilt = tilted ? GyroTilt(w_.value(state::kGyroTilt)) : GyroTilt::Zero();
+  const std::optional<GyroTilt> tilt =
+      tilted ? std::optional<GyroTilt>(w_.value(state::kGyroTilt)) : std::nullopt;
   auto imu =
       std::make_shared<ImuPreintegration>(in_.description.imu_noise, frame_.gravity_n(x_prev.p_n_b),
                                           frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g, tilt);

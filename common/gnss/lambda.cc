@@ -173,12 +173,13 @@ double bootstrapSuccessRate(const Eigen::VectorXd& D) {
 Eigen::MatrixXd ddAmbiguityCovariance(const Eigen::MatrixXd& P,
                                       const std::vector<std::pair<int, int>>& pairs) {
   const auto na = static_cast<long>(pairs.size());
+  const auto p = [&P](int i, int j) { return i < 0 || j < 0 ? 0.0 : P(i, j); };
   Eigen::MatrixXd Q(na, na);
   for (long k = 0; k < na; ++k) {
     const auto [sk, rk] = pairs[static_cast<size_t>(k)];
     for (long l = 0; l <= k; ++l) {
       const auto [sl, rl] = pairs[static_cast<size_t>(l)];
-      Q(k, l) = (P(sk, sl) - P(sk, rl)) - (P(rk, sl) - P(rk, rl));
+      Q(k, l) = (p(sk, sl) - p(sk, rl)) - (p(rk, sl) - p(rk, rl));
       Q(l, k) = Q(k, l);
     }
   }

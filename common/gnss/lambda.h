@@ -51,8 +51,9 @@ struct AmbiguityFix {
 };
 
 /// Covariance of the DD ambiguities N(sat) - N(ref), one per (sat, ref) pair of indices into the
-/// single-difference ambiguities' covariance P (what every estimator hands to LAMBDA). Read from
-/// P's entries, lower triangle computed and mirrored: exactly symmetric.
+/// single-difference ambiguities' covariance P (what every estimator hands to LAMBDA); an index of
+/// -1 is a known SD ambiguity (no variance). Read from P's entries, lower triangle computed and
+/// mirrored: exactly symmetric.
 Eigen::MatrixXd ddAmbiguityCovariance(const Eigen::MatrixXd& P,
                                       const std::vector<std::pair<int, int>>& pairs);
 

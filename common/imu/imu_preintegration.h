@@ -48,10 +48,12 @@ struct ImuBridgeModel {
 
 class ImuPreintegration {
  public:
-  /// gravity_n and omega_ie_n come from the LocalFrame; biases are the linearization point.
+  /// gravity_n and omega_ie_n come from the LocalFrame; biases (and the gyro's tilt) are the
+  /// linearization point. Without a tilt it is zero and its Jacobian is not carried
+  /// (tiltJacobian() stays zero): an estimator that does not estimate it saves the work.
   ImuPreintegration(const ImuNoise& noise, const Eigen::Vector3d& gravity_n,
                     const Eigen::Vector3d& omega_ie_n, const Eigen::Vector3d& b_a,
-                    const Eigen::Vector3d& b_g, const GyroTilt& tilt = GyroTilt::Zero());
+                    const Eigen::Vector3d& b_g, const std::optional<GyroTilt>& tilt = std::nullopt);
 
   /// Adds a step of dt seconds over which rate and specific force are constant (the caller passes
   /// the mean of the two bounding samples). The mean is exact for constant inputs. The extra
@@ -110,6 +112,7 @@ class ImuPreintegration {
   Eigen::Vector3d g_n_, w_ie_n_;
   Eigen::Vector3d b_a_lin_, b_g_lin_;
   GyroTilt tilt_lin_;
+  bool with_tilt_;
 
   double dt_sum_ = 0.0;
   Mat3 dR_;

@@ -108,6 +108,47 @@ TEST(StateRegistry, CloneIsFullyCorrelatedAndMinusInvertsCorrect) {
   EXPECT_LT((s.minus(base) - dx).norm(), 1e-12);
 }
 
+TEST(StateRegistry, ConditionedVariablesAreKnownConstantsWithTheJointSchurComplement) {
+  const StateKey kN7 = ambiguityKey(SatId{GnssSystem::kGps, 7}, '1');
+  StateRegistry s;
+  s.add(vectorBlock(state::kP), Eigen::Vector3d(1, 2, 3), Eigen::Matrix3d::Identity());
+  s.add(vectorBlock(kN5, 1), Eigen::VectorXd::Constant(1, 12.3), Eigen::MatrixXd::Identity(1, 1));
+  s.add(vectorBlock(state::kSv, 1), Eigen::VectorXd::Zero(1), Eigen::MatrixXd::Identity(1, 1));
+  s.add(vectorBlock(kN7, 1), Eigen::VectorXd::Constant(1, -4.0), Eigen::MatrixXd::Identity(1, 1));
+  const Eigen::MatrixXd P = spd(6, 0.1);
+  s.covariance() = P;
+  s.condition({kN7, kN5});
+  // The rest's covariance is the joint Schur complement over both, whatever their order.
+  const std::vector<int> rest{0, 1, 2, 4}, cond{3, 5};
+  Eigen::MatrixXd Prr(4, 4), Prc(4, 2), Pcc(2, 2);
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) Prr(i, j) = P(rest[size_t(i)], rest[size_t(j)]);
+    for (int j = 0; j < 2; ++j) Prc(i, j) = P(rest[size_t(i)], cond[size_t(j)]);
+  }
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) Pcc(i, j) = P(cond[size_t(i)], cond[size_t(j)]);
+  ASSERT_EQ(s.dim(), 4);
+  EXPECT_LT((s.covariance() - (Prr - Prc * Pcc.inverse() * Prc.transpose())).norm(), 1e-12);
+  EXPECT_EQ(s.keys(), (std::vector<StateKey>{state::kP, state::kSv}));
+  EXPECT_TRUE(s.has(kN5) && s.isKnown(kN5) && !s.isKnown(state::kSv));
+  EXPECT_EQ(s.offset(kN7), -1);
+  EXPECT_EQ(s.offset(state::kSv), 3);
+  EXPECT_THROW(s.marginal(kN5), std::invalid_argument);
+  // A known variable keeps its value through corrections and binds as a constant.
+  s.correct(Eigen::Vector4d(0.1, 0.2, 0.3, 0.4));
+  EXPECT_EQ(s.value(kN5)[0], 12.3);
+  const std::vector<BlockBinding> b = s.bind({state::kSv, kN7});
+  EXPECT_EQ(b[0].error_offset, 3);
+  EXPECT_EQ(b[1].error_offset, -1);
+  EXPECT_EQ(b[1].value[0], -4.0);
+  // A known variable is removed (it leaves no column) or estimated again after removal.
+  s.remove(kN7);
+  EXPECT_FALSE(s.has(kN7));
+  s.add(vectorBlock(kN7, 1), Eigen::VectorXd::Constant(1, 3.0), Eigen::MatrixXd::Identity(1, 1));
+  EXPECT_EQ(s.offset(kN7), 4);
+  EXPECT_EQ(s.dim(), 5);
+}
+
 TEST(KalmanUpdate, HeldStatesKeepValueAndVarianceAndTheUpdateIsJoseph) {
   // A Schmidt (consider) update: the held state's gain is zero; the covariance must equal the
   // dense Joseph form with that gain.

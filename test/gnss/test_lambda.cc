@@ -140,6 +140,26 @@ TEST(Lambda, RatioTestAndPartialResolution) {
   EXPECT_FALSE(resolveAmbiguities(a, Q, {5, 4, 3, 2}, opt).fixed);
 }
 
+TEST(Lambda, DdAmbiguityCovarianceIsADPDtAndAKnownAmbiguityHasNoVariance) {
+  std::mt19937 rng(21);
+  std::normal_distribution<double> g;
+  Eigen::MatrixXd A(4, 4);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) A(i, j) = g(rng);
+  const Eigen::MatrixXd P = A * A.transpose() + Eigen::MatrixXd::Identity(4, 4);
+  // Pairs (sat, ref) of SD indices; -1 is a known SD ambiguity.
+  const std::vector<std::pair<int, int>> pairs{{1, 0}, {2, 0}, {3, -1}, {-1, 2}};
+  Eigen::MatrixXd D = Eigen::MatrixXd::Zero(4, 4);
+  for (int k = 0; k < 4; ++k) {
+    if (pairs[size_t(k)].first >= 0) D(k, pairs[size_t(k)].first) += 1.0;
+    if (pairs[size_t(k)].second >= 0) D(k, pairs[size_t(k)].second) -= 1.0;
+  }
+  const Eigen::MatrixXd Q = ddAmbiguityCovariance(P, pairs);
+  EXPECT_LT((Q - D * P * D.transpose()).norm(), 1e-12);
+  EXPECT_EQ(Q, Q.transpose());
+  EXPECT_EQ(ddAmbiguityCovariance(P, {{-1, -1}})(0, 0), 0.0);
+}
+
 TEST(Lambda, BootstrapSuccessRate) {
   // One ambiguity with sigma 0.1 cycle: P = 2 Phi(0.5 / 0.1) - 1.
   EXPECT_NEAR(bootstrapSuccessRate(Eigen::VectorXd::Constant(1, 0.01)),

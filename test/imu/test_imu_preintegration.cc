@@ -211,6 +211,26 @@ TEST(ImuPreintegration, GyroTiltCorrectionIsFirstOrderAccurate) {
   EXPECT_EQ(pre.correctedDeltaV(zero, zero), pre.deltaV());
 }
 
+TEST(ImuPreintegration, WithoutATiltTheDeltasAreThoseAtZeroTiltAndNoTiltJacobianIsCarried) {
+  std::mt19937 rng(7);
+  Fixture f;
+  ImuPreintegration plain(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(),
+                          Vec3::Zero());
+  ImuPreintegration zero(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), Vec3::Zero(),
+                         Vec3::Zero(), GyroTilt::Zero());
+  for (int k = 0; k < 100; ++k) {
+    const Vec3 gyro = randomVec(rng, 0.8), acc = randomVec(rng, 2.0) + Vec3(0, 0, 9.8);
+    plain.integrate(0.01, gyro, acc);
+    zero.integrate(0.01, gyro, acc);
+  }
+  EXPECT_EQ(plain.deltaP(), zero.deltaP());
+  EXPECT_EQ(plain.deltaR(), zero.deltaR());
+  EXPECT_EQ(plain.covariance(), zero.covariance());
+  EXPECT_EQ(plain.biasJacobian(), zero.biasJacobian());
+  EXPECT_GT(zero.tiltJacobian().norm(), 0.0);
+  EXPECT_EQ(plain.tiltJacobian().norm(), 0.0);
+}
+
 TEST(ImuPreintegration, GyroTiltJacobianOfTheResidualMatchesNumericDifferentiation) {
   std::mt19937 rng(12);
   Fixture f;

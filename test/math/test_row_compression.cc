@@ -60,6 +60,33 @@ TEST(RowCompression, SameUpdateWithFewerRowsHeldStatesIncluded) {
   }
 }
 
+TEST(RowCompression, UncorrelatedGroupsOfTheSubsetAreWhitenedApartWithTheSameResult) {
+  // The subset's rows form two groups, interleaved (4, 6, 8 and 5, 7, 9), correlated within a
+  // group only, and a single row (as a Doppler row) on its own.
+  std::mt19937 rng(13);
+  for (int trial = 0; trial < 10; ++trial) {
+    const int n = 12;
+    const Eigen::MatrixXd P0 = randomCovariance(rng, n);
+    MeasurementRows rows = randomRows(rng, n);
+    const Eigen::MatrixXd Ra = randomCovariance(rng, 3), Rb = randomCovariance(rng, 2);
+    rows.R.bottomRightCorner(6, 6).setZero();
+    const std::vector<int> a{4, 6, 8}, b{5, 7};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) rows.R(a[size_t(i)], a[size_t(j)]) = Ra(i, j);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) rows.R(b[size_t(i)], b[size_t(j)]) = Rb(i, j);
+    rows.R(9, 9) = 0.3;
+    const MeasurementRows small = compressRows(rows, {4, 5, 6, 7, 8, 9});
+    ASSERT_EQ(small.H.rows(), 4 + 3);
+    Eigen::MatrixXd P_full = P0, P_small = P0;
+    const UpdateResult full = kalmanUpdate(P_full, rows, INFINITY);
+    const UpdateResult comp = kalmanUpdate(P_small, small, INFINITY);
+    ASSERT_TRUE(full.accepted && comp.accepted);
+    EXPECT_LT((full.dx - comp.dx).norm(), 1e-10 * (1.0 + full.dx.norm()));
+    EXPECT_LT((P_full - P_small).norm(), 1e-10 * P0.norm());
+  }
+}
+
 TEST(RowCompression, LeavesRowsAloneWhereItCannotHelpOrWouldBeWrong) {
   std::mt19937 rng(12);
   const MeasurementRows rows = randomRows(rng, 12);
