@@ -165,11 +165,16 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
   return est;
 }
 
+std::optional<GyroTilt> FactorGraphCore::gyroTilt() const {
+  if (!o_.estimate_gyro_tilt) return std::nullopt;
+  return GyroTilt(w_.value(state::kGyroTilt));
+}
+
 void FactorGraphCore::outputTrajectory(const FgoEpoch& from, const FgoEpoch& to) {
   const NavState x0 = nav(from);
   // One preintegration from `from`, continued to each output time (not restarted per output).
   ImuPreintegration pre(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b), frame_.omega_ie_n(),
-                        x0.b_a, x0.b_g);
+                        x0.b_a, x0.b_g, gyroTilt());
   double integrated_to = from.t;
   while (next_output_ <= to.t + 1e-9) {
     if (next_output_ > integrated_to) pre.integrateSamples(in_.imu, integrated_to, next_output_);
@@ -221,11 +226,9 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   const double dt = e.t - prev.t;
   const NavState x_prev = nav(prev);
   const bool tilted = o_.estimate_gyro_tilt;
-  const std::optional<GyroTilt> tilt =
-      tilted ? std::optional<GyroTilt>(w_.value(state::kGyroTilt)) : std::nullopt;
   auto imu =
       std::make_shared<ImuPreintegration>(in_.description.imu_noise, frame_.gravity_n(x_prev.p_n_b),
-                                          frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g, tilt);
+                                          frame_.omega_ie_n(), x_prev.b_a, x_prev.b_g, gyroTilt());
   imu->integrateSamples(in_.imu, prev.t, e.t);
   addNavVariables(e, imu->predict(x_prev), w_.value(prev.sv)[0], w_.value(prev.sw)[0],
                   w_.value(prev.cd)[0]);

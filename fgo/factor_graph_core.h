@@ -18,6 +18,7 @@
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
 #include "common/gnss/doppler.h"
+#include "common/imu/imu_preintegration.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/motion/motion_detector.h"
 #include "common/online/estimator_core.h"
@@ -60,6 +61,8 @@ class FactorGraphCore : public EstimatorCore {
   FgoEpoch newEpoch(double t);
   void addNavVariables(const FgoEpoch& e, const NavState& x, double s_v, double s_w, double cd);
   NavState nav(const FgoEpoch& e) const;
+  /// The gyro's tilt where it is estimated (calibration.estimate_gyro_tilt), else none.
+  std::optional<GyroTilt> gyroTilt() const;
   void feedMotion(double t, const Eigen::Vector3d& b_g);
   void start(const InitialState& init);
   CalibrationEstimate estimate(const FgoEpoch& e) const;
