@@ -6,7 +6,9 @@
 # drive of the same robot (bench/field_test_drive.yaml: another route, seed + 1000: new noise)
 # through 1000 s without GNSS after 100 s with it. Prints horizontal MAX and RMSE per scene and
 # scheme (mean over seeds), the initial guess, and the true calibration as the floor.
-# Usage: bench/dead_reckoning.sh [--shard k/n] [--results <file.csv>] [seed...]
+# Usage: bench/dead_reckoning.sh [--gyro-tilt] [--shard k/n] [--results <file.csv>] [seed...]
+#          (--gyro-tilt: every calibration also estimates the gyro's tilt against the
+#          accelerometer, calibration.estimate_gyro_tilt, and dead reckoning applies it)
 #          (about 5 minutes per seed on an idle machine; --shard: only the k-th of every n seeds of
 #          the list, one of n independent processes; --results: keep the per-seed rows)
 #        bench/dead_reckoning.sh --merge <file.csv>...   (the table of several shards' rows)
@@ -16,9 +18,10 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 giocal="$root/build/apps/giocal"
-shard=1 shards=1 keep="" merge=()
+shard=1 shards=1 keep="" merge=() tilt=0
 while [ $# -gt 0 ]; do
   case "$1" in
+    --gyro-tilt) tilt=1; shift ;;
     --shard) IFS=/ read -r shard shards <<< "$2"; shift 2 ;;
     --results) keep="$2"; shift 2 ;;
     --merge) shift; merge=("$@"); break ;;
@@ -36,7 +39,8 @@ for i in "${!all[@]}"; do
 done
 work="$(mktemp -d /tmp/giocal_dr.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
-printf 'calibration:\n  ambiguity_resolution: 0\n' > "$work/war.yaml"
+printf 'calibration:\n  ambiguity_resolution: 0\n  estimate_gyro_tilt: %s\n' "$tilt" > "$work/war.yaml"
+printf 'calibration:\n  estimate_gyro_tilt: %s\n' "$tilt" > "$work/ar.yaml"
 scene_ends=(320 630 940 end)
 results="$work/results.csv"
 echo "seed,scheme,scene,max,rmse" > "$results"
@@ -71,9 +75,9 @@ for seed in "${seeds[@]}"; do
   done
   for est in ekf fgo; do
     for scheme in LC TC-WAR TC-AR; do
-      config=""
+      config="--config $work/ar.yaml"
       [ "$scheme" = TC-WAR ] && config="--config $work/war.yaml"
-      [ "$scheme" = LC ] && config="--gnss lc --pos $work/cal_$seed.pos"
+      [ "$scheme" = LC ] && config="--gnss lc --pos $work/cal_$seed.pos --config $work/ar.yaml"
       # shellcheck disable=SC2086
       "$giocal" calibrate --data "$work/cal_$seed" --estimator "$est" $config \
         --out "$work/run" --overwrite > /dev/null
