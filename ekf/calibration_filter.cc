@@ -211,11 +211,8 @@ void CalibrationFilter::feedMotion(double t) {
 const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
   if (!pending_) {
     const NavState x = navState(s_);
-    const std::optional<GyroTilt> tilt = s_.has(state::kGyroTilt)
-                                             ? std::optional<GyroTilt>(s_.value(state::kGyroTilt))
-                                             : std::nullopt;
     pending_ = std::make_unique<ImuPreintegration>(dataset_.imu_noise, frame_.gravity_n(x.p_n_b),
-                                                   frame_.omega_ie_n(), x.b_a, x.b_g, tilt);
+                                                   frame_.omega_ie_n(), x.b_a, x.b_g, gyroTilt(s_));
     pending_t_ = t_;
   }
   if (t > pending_t_) {

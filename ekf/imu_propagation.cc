@@ -26,10 +26,14 @@ void setNavState(StateRegistry& s, const NavState& x) {
   s.value(state::kBg) = x.b_g;
 }
 
+std::optional<GyroTilt> gyroTilt(const StateRegistry& s) {
+  if (!s.has(state::kGyroTilt)) return std::nullopt;
+  return GyroTilt(s.value(state::kGyroTilt));
+}
+
 void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
   const NavState xi = navState(s);
-  std::optional<GyroTilt> tilt;
-  if (s.has(state::kGyroTilt)) tilt = GyroTilt(s.value(state::kGyroTilt));
+  const std::optional<GyroTilt> tilt = gyroTilt(s);
   const NavState xj = pre.predict(xi, tilt);
   const ImuResidual r = pre.evaluate(xi, xj, tilt);
   // Residual Jacobians in the variable order p, q, v, b_a, b_g.

@@ -3,6 +3,8 @@
 // residual Jacobians give the error-state transition F = -J_j^-1 J_i and noise J_j^-1 S J_j^-T.
 #pragma once
 
+#include <optional>
+
 #include "common/imu/imu_preintegration.h"
 #include "ekf/state_registry.h"
 
@@ -10,6 +12,8 @@ namespace giocal {
 
 NavState navState(const StateRegistry& s);
 void setNavState(StateRegistry& s, const NavState& x);
+/// The gyro triad's tilt where the state estimates it, else none.
+std::optional<GyroTilt> gyroTilt(const StateRegistry& s);
 
 /// Moves the navigation variables to the end of `pre`'s interval and propagates the covariance of
 /// the whole state (other variables keep their values and their cross-covariances are carried).

@@ -107,11 +107,12 @@ void FactorGraphCore::start(const InitialState& init) {
        0.0,
        "clock_drift_prior"});
   // Optional calibration states, each with an independent prior per component.
-  const auto with_prior = [&](const StateKey& key, const Eigen::VectorXd& mean, double sd) {
-    if (!w_.has(key)) w_.addVariable(vectorBlock(key, static_cast<int>(mean.size())), mean);
-    const StateBlock b = vectorBlock(key, static_cast<int>(mean.size()));
-    const Eigen::MatrixXd P = Eigen::MatrixXd::Identity(mean.size(), mean.size()) * sd * sd;
-    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{b}, mean, P),
+  const auto with_prior = [&](const StateKey& key, const Eigen::VectorXd& start, double sd) {
+    const int n = static_cast<int>(start.size());
+    if (!w_.has(key)) w_.addVariable(vectorBlock(key, n), start);
+    const StateBlock b = vectorBlock(key, n);
+    const Eigen::MatrixXd P_key = Eigen::MatrixXd::Identity(n, n) * sd * sd;
+    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{b}, start, P_key),
                   {key},
                   0.0,
                   key.str() + "_prior"});
@@ -151,7 +152,7 @@ CalibrationEstimate FactorGraphCore::estimate(const FgoEpoch& e) const {
     ++next;
   }
   if (o_.estimate_gyro_tilt) {
-    est.gyro_tilt = w_.value(state::kGyroTilt);
+    est.gyro_tilt = *gyroTilt();
     est.gyro_tilt_sd = C.block<2, 2>(next, next).diagonal().cwiseSqrt();
   }
   // A held state stays at the prior: its sigma is the prior's, and nothing correlates with it.

@@ -99,9 +99,9 @@ std::vector<PositionFix> readPosFile(const std::string& path) {
       // A near-singular covariance (few satellites) written to 0.1 mm can round to correlations
       // just past 1: the nearest positive definite matrix is the solution's. Beyond rounding the
       // file is wrong.
-      const Eigen::Vector3d sd = f.cov_enu.diagonal().cwiseSqrt();
+      const Eigen::Vector3d sd_enu = f.cov_enu.diagonal().cwiseSqrt();
       const Eigen::Matrix3d rho =
-          sd.cwiseInverse().asDiagonal() * f.cov_enu * sd.cwiseInverse().asDiagonal();
+          sd_enu.cwiseInverse().asDiagonal() * f.cov_enu * sd_enu.cwiseInverse().asDiagonal();
       if ((rho - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1.01) {
         throw DataError(path, line, "the covariance is not positive definite");
       }

@@ -8,38 +8,19 @@ namespace giocal {
 
 namespace {
 
-// Gamma2(phi) = int_0^1 int_0^u Exp(s phi) ds du, so that a constant rate and specific force over
-// a step move position by dR * Gamma2 * a * dt^2.
-Mat3 gamma2(const Vec3& phi) {
-  const double th = phi.norm();
-  const Mat3 K = skew(phi);
-  if (th < 1e-4) return 0.5 * Mat3::Identity() + K / 6.0 + K * K / 24.0;
-  const double t2 = th * th;
-  return 0.5 * Mat3::Identity() + (th - std::sin(th)) / (t2 * th) * K +
-         (t2 + 2.0 * std::cos(th) - 2.0) / (2.0 * t2 * t2) * K * K;
-}
-
-// One step's rotation terms from one sine and cosine: E = Exp(phi), Jr = Jr(phi),
-// G1 = Jr(-phi) = Jr^T = int_0^1 Exp(s phi) ds and G2 = gamma2(phi), with the same arithmetic as
-// expSO3, rightJacobianSO3 and gamma2 (four trigonometric evaluations per IMU sample were a tenth
-// of the preintegration).
+// One step's rotation terms from one set of coefficients: E = Exp(phi), Jr = Jr(phi),
+// G1 = Jr(-phi) = Jr^T = int_0^1 Exp(s phi) ds and G2 = gamma2(phi) (four trigonometric
+// evaluations per IMU sample were a tenth of the preintegration).
 struct StepRotation {
   Mat3 E, Jr, G1, G2;
 };
 
 StepRotation stepRotation(const Vec3& phi) {
-  const double th = phi.norm();
-  if (th < 1e-4) return {expSO3(phi), rightJacobianSO3(phi), rightJacobianSO3(-phi), gamma2(phi)};
-  const Mat3 K = skew(phi);
-  const double s = std::sin(th), c = std::cos(th), t2 = th * th;
-  const Mat3 A = (1.0 - c) / t2 * K, B = (th - s) / (t2 * th) * K * K;
-  StepRotation r;
-  r.E = Mat3::Identity() + s / th * K + (1.0 - c) / (th * th) * K * K;
-  r.Jr = Mat3::Identity() - A + B;
-  r.G1 = Mat3::Identity() + A + B;
-  r.G2 = 0.5 * Mat3::Identity() + (th - s) / (t2 * th) * K +
-         (t2 + 2.0 * c - 2.0) / (2.0 * t2 * t2) * K * K;
-  return r;
+  const So3Coefficients k = so3Coefficients(phi.norm());
+  const Mat3 K = skew(phi), KK = K * K;
+  const Mat3 B = k.b * K, C = k.c * KK;
+  return {Mat3::Identity() + k.a * K + k.b * KK, Mat3::Identity() - B + C, Mat3::Identity() + B + C,
+          0.5 * Mat3::Identity() + k.c * K + k.d * KK};
 }
 
 // The moving rows of the error-state transition, F = [A9 Ab], by their 3x3 blocks over

@@ -5,9 +5,27 @@
 namespace giocal {
 
 namespace {
-// Below this angle the closed forms lose precision and their Taylor series are used instead.
+// Below this angle logSO3's closed form loses precision and its Taylor series is used instead.
 constexpr double kSmallAngle = 1e-5;
+// Below this angle the coefficients come from their Taylor series: the closed forms subtract
+// nearly equal numbers (d's relative error is about 1e-16 / theta^4), and with terms up to
+// theta^8 the series is exact to rounding here.
+constexpr double kSeriesAngle = 0.1;
 }  // namespace
+
+So3Coefficients so3Coefficients(double theta) {
+  const double t2 = theta * theta;
+  if (theta < kSeriesAngle) {
+    const double t4 = t2 * t2, t6 = t4 * t2, t8 = t4 * t4;
+    return {1.0 - t2 / 6.0 + t4 / 120.0 - t6 / 5040.0 + t8 / 362880.0,
+            0.5 - t2 / 24.0 + t4 / 720.0 - t6 / 40320.0 + t8 / 3628800.0,
+            1.0 / 6.0 - t2 / 120.0 + t4 / 5040.0 - t6 / 362880.0 + t8 / 39916800.0,
+            1.0 / 24.0 - t2 / 720.0 + t4 / 40320.0 - t6 / 3628800.0 + t8 / 479001600.0};
+  }
+  const double s = std::sin(theta), c = std::cos(theta);
+  return {s / theta, (1.0 - c) / t2, (theta - s) / (t2 * theta),
+          (t2 + 2.0 * c - 2.0) / (2.0 * t2 * t2)};
+}
 
 Mat3 skew(const Vec3& v) {
   Mat3 m;
@@ -16,14 +34,9 @@ Mat3 skew(const Vec3& v) {
 }
 
 Mat3 expSO3(const Vec3& phi) {
-  const double theta = phi.norm();
+  const So3Coefficients k = so3Coefficients(phi.norm());
   const Mat3 K = skew(phi);
-  if (theta < kSmallAngle) {
-    return Mat3::Identity() + K + 0.5 * K * K;
-  }
-  const double a = std::sin(theta) / theta;
-  const double b = (1.0 - std::cos(theta)) / (theta * theta);
-  return Mat3::Identity() + a * K + b * K * K;
+  return Mat3::Identity() + k.a * K + k.b * K * K;
 }
 
 Vec3 logSO3(const Mat3& R) {
@@ -41,14 +54,9 @@ Vec3 logSO3(const Mat3& R) {
 }
 
 Mat3 rightJacobianSO3(const Vec3& phi) {
-  const double theta = phi.norm();
+  const So3Coefficients k = so3Coefficients(phi.norm());
   const Mat3 K = skew(phi);
-  if (theta < kSmallAngle) {
-    return Mat3::Identity() - 0.5 * K + K * K / 6.0;
-  }
-  const double t2 = theta * theta;
-  return Mat3::Identity() - (1.0 - std::cos(theta)) / t2 * K +
-         (theta - std::sin(theta)) / (t2 * theta) * K * K;
+  return Mat3::Identity() - k.b * K + k.c * K * K;
 }
 
 Mat3 rightJacobianInvSO3(const Vec3& phi) {

@@ -10,6 +10,15 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
 
+/// The scalar coefficients of the SO(3) series at angle theta, so that with K = skew(phi):
+/// Exp = I + a K + b K^2, Jr = I - b K + c K^2, Jr^T = I + b K + c K^2 and
+/// int_0^1 int_0^u Exp(s phi) ds du = I/2 + c K + d K^2 (a = sin/t, b = (1 - cos)/t^2, c = (t - sin)/t^3,
+/// d = (t^2 + 2 cos - 2)/(2 t^4)).
+struct So3Coefficients {
+  double a, b, c, d;
+};
+So3Coefficients so3Coefficients(double theta);
+
 /// [v]x, the matrix with skew(a) * b = a x b.
 Mat3 skew(const Vec3& v);
 

@@ -58,6 +58,31 @@ TEST(So3, RightJacobianMatchesNumericDerivativeOfExp) {
   }
 }
 
+TEST(So3, CoefficientsAreContinuousAtTheSeriesBoundaryAndIntegrateExp) {
+  // The series and the closed forms meet where the series hands over.
+  const So3Coefficients lo = so3Coefficients(0.1 - 1e-12), hi = so3Coefficients(0.1 + 1e-12);
+  EXPECT_NEAR(lo.a, hi.a, 1e-13);
+  EXPECT_NEAR(lo.b, hi.b, 1e-13);
+  EXPECT_NEAR(lo.c, hi.c, 1e-13);
+  EXPECT_NEAR(lo.d, hi.d, 1e-11);
+  // I/2 + c K + d K^2 is the double integral of Exp(s phi), by the midpoint rule, and
+  // I + b K + c K^2 the single one.
+  for (const Vec3& phi : {Vec3(1e-3, -2e-3, 5e-4), Vec3(0.05, 0.02, -0.07), Vec3(0.4, -1.0, 0.7)}) {
+    const So3Coefficients k = so3Coefficients(phi.norm());
+    const Mat3 K = skew(phi);
+    const int n = 2000;
+    Mat3 single = Mat3::Zero(), twice = Mat3::Zero();
+    for (int i = 0; i < n; ++i) {
+      const double s = (i + 0.5) / n;
+      single += expSO3(s * phi) / n;
+      twice += (1.0 - s) * expSO3(s * phi) / n;  // int_0^1 int_s^1 du ds
+    }
+    EXPECT_LT((single - (Mat3::Identity() + k.b * K + k.c * K * K)).norm(), 1e-7);
+    EXPECT_LT((twice - (0.5 * Mat3::Identity() + k.c * K + k.d * K * K)).norm(), 1e-7);
+    EXPECT_LT((single - rightJacobianSO3(phi).transpose()).norm(), 1e-7);
+  }
+}
+
 TEST(Rotation, RpyRoundTripAndConvention) {
   const Vec3 rpy(0.1, -0.2, 2.5);
   const Mat3 R = rotationFromRpy(rpy);
