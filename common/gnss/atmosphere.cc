@@ -7,11 +7,13 @@
 
 namespace giocal {
 
-void elevationAzimuth(const Eigen::Vector3d& rx_e, const Eigen::Vector3d& sat_e, double& el,
-                      double& az) {
+Topocentric::Topocentric(const Eigen::Vector3d& rx_e) : rx_e_(rx_e) {
   const Geodetic g = geodeticFromEcef(rx_e);
-  const Eigen::Vector3d los =
-      rotationEcefFromEnu(g.lat, g.lon).transpose() * (sat_e - rx_e).normalized();
+  R_enu_e_ = rotationEcefFromEnu(g.lat, g.lon).transpose();
+}
+
+void Topocentric::elevationAzimuth(const Eigen::Vector3d& sat_e, double& el, double& az) const {
+  const Eigen::Vector3d los = R_enu_e_ * (sat_e - rx_e_).normalized();
   el = std::asin(std::clamp(los.z(), -1.0, 1.0));
   az = std::atan2(los.x(), los.y());
   if (az < 0) az += 2 * M_PI;

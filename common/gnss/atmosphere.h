@@ -9,9 +9,17 @@
 
 namespace giocal {
 
-/// Elevation and azimuth [rad] of a satellite seen from a receiver (both ECEF).
-void elevationAzimuth(const Eigen::Vector3d& rx_e, const Eigen::Vector3d& sat_e, double& el,
-                      double& az);
+/// A receiver's local horizon: elevation and azimuth [rad] of satellites seen from it (ECEF). The
+/// receiver's latitude and longitude are found once, not per satellite.
+class Topocentric {
+ public:
+  explicit Topocentric(const Eigen::Vector3d& rx_e);
+  void elevationAzimuth(const Eigen::Vector3d& sat_e, double& el, double& az) const;
+
+ private:
+  Eigen::Vector3d rx_e_;
+  Eigen::Matrix3d R_enu_e_;
+};
 
 /// Saastamoinen zenith delay with a standard atmosphere (1013.25 hPa, 15 C, 70 % humidity at sea
 /// level) mapped by 1/cos(zenith) [m].

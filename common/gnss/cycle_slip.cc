@@ -21,14 +21,29 @@ bool combinations(GnssSystem sys, const SignalObs* a, const SignalObs* b, double
   return true;
 }
 
+// The entry of `key` in a vector sorted by key, or end.
+template <class V, class K>
+auto findKey(V& v, const K& key) {
+  const auto it = std::lower_bound(v.begin(), v.end(), key,
+                                   [](const auto& e, const K& k) { return e.first < k; });
+  return it != v.end() && it->first == key ? it : v.end();
+}
+
+struct ByKey {
+  template <class A, class B>
+  bool operator()(const A& a, const B& b) const {
+    return a.first < b.first;
+  }
+};
+
 }  // namespace
 
 void CycleSlipDetector::update(const ObsEpoch& epoch) {
   slip_.clear();
   // Doppler check: the phase change against the Doppler prediction, with the part common to all
   // satellites (receiver clock jumps) removed by the median.
-  std::vector<std::pair<std::pair<SatId, char>, double>> doppler_misfit;
-  std::map<std::pair<SatId, char>, Track> next;
+  std::vector<std::pair<Key, double>> doppler_misfit;
+  next_.clear();
   for (const SatObs& so : epoch.sats) {
     const SignalObs* prim = so.bestOnBand(primaryBand(so.sat.sys));
     std::vector<char> bands;
@@ -61,7 +76,7 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
       tr.has_gf = dual;
       tr.has_mw = dual && !std::isnan(mw);
       bool slip = (s->lli & 1) != 0 || epoch.flag == 1;
-      const auto it = tracks_.find(key);
+      const auto it = findKey(tracks_, key);
       if (it == tracks_.end() || epoch.t - it->second.t > options_.max_gap) {
         slip = true;
       } else {
@@ -89,28 +104,38 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
           slip = true;
         }
       }
-      slip_[key] = slip;
-      next[key] = tr;
+      slip_.push_back({key, slip});
+      next_.push_back({key, tr});
     }
   }
+  std::sort(slip_.begin(), slip_.end(), ByKey());
   if (doppler_misfit.size() >= 3) {
     std::vector<double> v;
     for (const auto& m : doppler_misfit) v.push_back(m.second);
     const double common = median(v);
     for (const auto& m : doppler_misfit) {
-      if (std::abs(m.second - common) > options_.doppler_threshold) slip_[m.first] = true;
+      if (std::abs(m.second - common) > options_.doppler_threshold) {
+        findKey(slip_, m.first)->second = true;
+      }
     }
   }
   // Tracks of signals not seen this epoch are kept until max_gap, so that a signal blocked for a
   // moment is tested against its last value instead of counting as new.
+  std::sort(next_.begin(), next_.end(), ByKey());
+  const auto seen = static_cast<std::ptrdiff_t>(next_.size());
   for (const auto& [key, tr] : tracks_) {
-    if (!next.count(key) && epoch.t - tr.t <= options_.max_gap) next[key] = tr;
+    if (epoch.t - tr.t <= options_.max_gap &&
+        !std::binary_search(next_.begin(), next_.begin() + seen, std::pair<Key, Track>{key, tr},
+                            ByKey())) {
+      next_.push_back({key, tr});
+    }
   }
-  tracks_ = std::move(next);
+  std::inplace_merge(next_.begin(), next_.begin() + seen, next_.end(), ByKey());
+  std::swap(tracks_, next_);
 }
 
 bool CycleSlipDetector::slipped(const SatId& sat, char band) const {
-  const auto it = slip_.find({sat, band});
+  const auto it = findKey(slip_, Key{sat, band});
   return it == slip_.end() || it->second;
 }
 

@@ -3,8 +3,8 @@
 // prediction of the phase change.
 #pragma once
 
-#include <map>
 #include <utility>
+#include <vector>
 
 #include "common/gnss/observation.h"
 
@@ -37,9 +37,11 @@ class CycleSlipDetector {
     bool has_gf = false, has_mw = false;
     double D = 0;
   };
+  using Key = std::pair<SatId, char>;
   CycleSlipOptions options_;
-  std::map<std::pair<SatId, char>, Track> tracks_;
-  std::map<std::pair<SatId, char>, bool> slip_;
+  // Sorted by key: flat vectors rebuilt each epoch (maps cost an allocation per signal).
+  std::vector<std::pair<Key, Track>> tracks_, next_;
+  std::vector<std::pair<Key, bool>> slip_;
 };
 
 }  // namespace giocal

@@ -37,6 +37,7 @@ DdEpoch DdEpochBuilder::build(const ObsEpoch& rover, const ObsEpoch& base,
   // The satellites as each receiver saw them (the time tags and pseudo-ranges carry the same
   // receiver clock error, so tag minus range is the transmission time for both).
   const double mask = options_.elevation_mask_deg * M_PI / 180.0;
+  const Topocentric sky(rover_e);
   std::vector<std::pair<const SatObs*, const SatObs*>> pairs;
   for (const SatObs& ro : rover.sats) {
     if (std::find(options_.systems.begin(), options_.systems.end(), ro.sat.sys) ==
@@ -56,7 +57,7 @@ DdEpoch DdEpochBuilder::build(const ObsEpoch& rover, const ObsEpoch& base,
     g.sat_at_rover_e = sr->p_e;
     g.base_range = (sb->p_e - base_e_).norm();
     double az = 0.0;
-    elevationAzimuth(rover_e, sr->p_e, g.el, az);
+    sky.elevationAzimuth(sr->p_e, g.el, az);
     if (g.el < mask) continue;
     out.geometry.push_back(g);
     out.undiff_variance.push_back(

@@ -14,6 +14,7 @@ std::vector<DopplerObservation> dopplerObservations(const ObsEpoch& epoch,
                                                     const DopplerOptions& options) {
   std::vector<DopplerObservation> out;
   const double mask = options.elevation_mask_deg * M_PI / 180.0;
+  const Topocentric sky(rover_e);
   for (const SatObs& so : epoch.sats) {
     if (std::find(options.systems.begin(), options.systems.end(), so.sat.sys) ==
         options.systems.end()) {
@@ -33,7 +34,7 @@ std::vector<DopplerObservation> dopplerObservations(const ObsEpoch& epoch,
     DopplerObservation d;
     d.sat = so.sat;
     double az = 0.0;
-    elevationAzimuth(rover_e, sr->p_e, d.el, az);
+    sky.elevationAzimuth(sr->p_e, d.el, az);
     if (d.el < mask) continue;
     d.los_e = (sr->p_e - rover_e).normalized();
     // Rate of the Sagnac term omega/c (x_s y_r - y_s x_r) from the satellite's motion alone; the

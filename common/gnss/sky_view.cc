@@ -22,13 +22,14 @@ double positionDop(const std::vector<Eigen::Vector3d>& los) {
 SkyView skyView(const ObsEpoch& epoch, const BroadcastOrbits& orbits, const Eigen::Vector3d& rx_e,
                 double elevation_mask_deg) {
   std::vector<Eigen::Vector3d> los;
+  const Topocentric sky(rx_e);
   for (const SatObs& s : epoch.sats) {
     const SignalObs* sig = s.bestOnBand(primaryBand(s.sat.sys));
     if (!sig || !std::isfinite(sig->P)) continue;
     const auto sat = orbits.atReception(s.sat, epoch.t, sig->P, sig->band, rx_e);
     if (!sat) continue;
     double el = 0.0, az = 0.0;
-    elevationAzimuth(rx_e, sat->p_e, el, az);
+    sky.elevationAzimuth(sat->p_e, el, az);
     if (el * 180.0 / M_PI < elevation_mask_deg) continue;
     los.push_back(sat->p_e - rx_e);
   }

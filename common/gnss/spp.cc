@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "common/gnss/atmosphere.h"
 
@@ -78,6 +79,8 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
     for (int it = 0; it < 15 && !converged; ++it) {
       const bool near_surface = x.norm() > 6.0e6;
       const Geodetic g = near_surface ? geodeticFromEcef(x) : Geodetic{};
+      const std::optional<Topocentric> sky =
+          near_surface ? std::optional<Topocentric>(x) : std::nullopt;
       rows.clear();
       systems.clear();
       for (size_t k = 0; k < cands.size(); ++k) {
@@ -92,7 +95,7 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
         c.el = M_PI / 2;
         c.az = 0;
         if (near_surface) {
-          elevationAzimuth(x, c.s.p_e, c.el, c.az);
+          sky->elevationAzimuth(c.s.p_e, c.el, c.az);
           if (c.el < mask) continue;
           trop = tropoSaastamoinen(g, c.el);
           if (orbits.nav().has_gps_iono) {

@@ -10,10 +10,10 @@ using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
 
-/// The scalar coefficients of the SO(3) series at angle theta, so that with K = skew(phi):
+/// The scalar coefficients of the SO(3) series at angle t, so that with K = skew(phi):
 /// Exp = I + a K + b K^2, Jr = I - b K + c K^2, Jr^T = I + b K + c K^2 and
-/// int_0^1 int_0^u Exp(s phi) ds du = I/2 + c K + d K^2 (a = sin/t, b = (1 - cos)/t^2, c = (t - sin)/t^3,
-/// d = (t^2 + 2 cos - 2)/(2 t^4)).
+/// int_0^1 int_0^u Exp(s phi) ds du = I/2 + c K + d K^2, where a = sin(t)/t,
+/// b = (1 - cos(t))/t^2, c = (t - sin(t))/t^3 and d = (t^2 + 2 cos(t) - 2)/(2 t^4).
 struct So3Coefficients {
   double a, b, c, d;
 };

@@ -29,6 +29,19 @@ TEST(ReorderBuffer, ReleasesInTimeOrderAfterTheLagAndRefusesThePast) {
   EXPECT_EQ(out, std::vector<double>({0.8, 1.0, 1.4, 2.0}));
 }
 
+TEST(ReorderBuffer, EqualTimesLeaveInArrivalOrderAndALateDatumFindsItsPlace) {
+  ReorderBuffer<int> b(1.0);
+  std::vector<int> out;
+  const auto take = [&](double, int& v) { out.push_back(v); };
+  for (const auto& [t, v] : std::vector<std::pair<double, int>>{
+           {1.0, 1}, {1.0, 2}, {1.5, 4}, {1.2, 3}, {1.0, 10}, {0.5, 0}, {1.5, 5}}) {
+    EXPECT_TRUE(b.push(t, v));
+  }
+  b.release(take, true);
+  EXPECT_EQ(out, std::vector<int>({0, 1, 2, 10, 3, 4, 5}));
+  EXPECT_EQ(b.size(), 0u);
+}
+
 CalibrationEstimate estimate(double t, double s_v, double sd_s_v) {
   CalibrationEstimate e;
   e.t = t;
