@@ -64,16 +64,24 @@ void OdometerDelayEstimator::addOdometer(double t, double yaw_rate) {
   block_ = {t, t, 0.0};
 }
 
-double OdometerDelayEstimator::angleAt(const std::vector<Rate>& g, double t, std::size_t& cursor) {
-  if (g.size() < 2 || t < g.front().t || t > g.back().t) return NAN;
-  // The last sample at or before t (the one before the last at the end), walking forward: the
-  // callers ask for rising times, so a block costs one pass over its samples.
-  while (cursor + 2 < g.size() && g[cursor + 1].t <= t) ++cursor;
-  const Rate &a = g[cursor], &b = g[cursor + 1];
-  if (b.t - a.t > 0.1) return NAN;  // an IMU gap
-  // The rate is linear between samples: its integral is quadratic.
-  const double h = t - a.t, slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
-  return a.angle + a.rate * h + 0.5 * slope * h * h;
+bool OdometerDelayEstimator::anglesAt(const std::vector<Rate>& g, double t,
+                                      std::vector<double>& out) const {
+  out.resize(sum_x_.size());
+  if (g.size() < 2) return false;
+  // The largest delay first: rising times, so the samples are walked once.
+  std::size_t at = 0;
+  for (std::size_t k = out.size(); k-- > 0;) {
+    const double tk = t - (-max_delay_s_ + static_cast<double>(k) * step_s_);
+    if (tk < g.front().t || tk > g.back().t) return false;
+    // The last sample at or before tk (the one before the last at the end).
+    while (at + 2 < g.size() && g[at + 1].t <= tk) ++at;
+    const Rate &a = g[at], &b = g[at + 1];
+    if (b.t - a.t > 0.1) return false;  // an IMU gap
+    // The rate is linear between samples: its integral is quadratic.
+    const double h = tk - a.t, slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
+    out[k] = a.angle + a.rate * h + 0.5 * slope * h * h;
+  }
+  return true;
 }
 
 void OdometerDelayEstimator::compare(const Block& b) {
@@ -83,7 +91,7 @@ void OdometerDelayEstimator::compare(const Block& b) {
   // look-ups cost more than the comparison itself (callgrind). From the last sample at or
   // before the earliest time asked to the one after the first at or after the latest, one more
   // each side for the rounding of the delay grid, so that every look-up finds the samples (and
-  // the NaN cases) it would find in the whole deque.
+  // the gaps) it would find in the whole deque.
   const auto later = [](double t, const Rate& r) { return t < r.t; };
   auto first = std::upper_bound(gyro_.begin(), gyro_.end(), b.t0 - max_delay_s_, later);
   for (int k = 0; k < 2 && first != gyro_.begin(); ++k) --first;
@@ -91,20 +99,21 @@ void OdometerDelayEstimator::compare(const Block& b) {
                                [](const Rate& r, double t) { return r.t < t; });
   for (int k = 0; k < 2 && last != gyro_.end(); ++k) ++last;
   window_.assign(first, last);
-  std::vector<double> x(sum_x_.size());
-  std::size_t at1 = 0, at0 = 0;
-  for (std::size_t k = x.size(); k-- > 0;) {  // the largest delay first: rising times
-    const double delay = -max_delay_s_ + static_cast<double>(k) * step_s_;
-    x[k] = (angleAt(window_, b.t1 - delay, at1) - angleAt(window_, b.t0 - delay, at0)) / span;
-    if (std::isnan(x[k])) return;  // every candidate sees the same blocks
-  }
+  // Every candidate sees the same blocks: one outside the data or across a gap skips the block.
+  const bool start_known = b.t0 == end_t_;
+  std::swap(start_, end_);
+  end_t_ = NAN;
+  if (!start_known && !anglesAt(window_, b.t0, start_)) return;
+  if (!anglesAt(window_, b.t1, end_)) return;
+  end_t_ = b.t1;
   ++n_;
   sum_w_ += w;
   sum_ww_ += w * w;
-  for (std::size_t j = 0; j < x.size(); ++j) {
-    sum_x_[j] += x[j];
-    sum_xx_[j] += x[j] * x[j];
-    sum_xw_[j] += x[j] * w;
+  for (std::size_t j = 0; j < end_.size(); ++j) {
+    const double x = (end_[j] - start_[j]) / span;
+    sum_x_[j] += x;
+    sum_xx_[j] += x * x;
+    sum_xw_[j] += x * w;
   }
 }
 

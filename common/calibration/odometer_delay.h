@@ -42,14 +42,19 @@ class OdometerDelayEstimator {
   struct Rate {
     double t, rate, angle;  // rate about up, and its integral since the first sample
   };
-  /// The integral of the rate about up from the first kept sample to t; NaN outside `samples`.
-  /// `cursor`: where the previous call found its sample (start at 0; times must rise).
-  static double angleAt(const std::vector<Rate>& samples, double t, std::size_t& cursor);
+  /// The integral of the rate about up from the first kept sample at t - d for every candidate
+  /// delay d, into `out` (index as the sums); false when one of them falls outside `samples` or
+  /// in an IMU gap.
+  bool anglesAt(const std::vector<Rate>& samples, double t, std::vector<double>& out) const;
 
   Eigen::Vector3d up_b_;
   double max_delay_s_, step_s_;
   std::deque<Rate> gyro_;
-  std::vector<Rate> window_;    // the samples one comparison reads, contiguous
+  std::vector<Rate> window_;  // the samples one comparison reads, contiguous
+  // The angles at the end of the last compared block: blocks follow each other, so they are the
+  // next block's start angles.
+  std::vector<double> start_, end_;
+  double end_t_ = NAN;
   std::deque<Block> pending_;   // waiting for the IMU
   Block block_{NAN, NAN, 0.0};  // being summed
   double last_odometer_t_ = NAN, last_yaw_rate_ = 0.0;

@@ -104,13 +104,17 @@ std::optional<SatelliteAtReception> BroadcastOrbits::atReception(
   const SatelliteState s = satelliteState(*eph, t_tx);
   // Sagnac: express the transmit-time position in the ECEF frame of reception, rotating by the
   // geometric flight time (iterated once: the rotation changes the range by metres only).
+  // The Earth turns by omega tau about z: a rotation by -omega tau.
+  const auto earthRotation = [](double tau) {
+    return Eigen::AngleAxisd(-wgs84::kOmegaEarth * tau, Eigen::Vector3d::UnitZ())
+        .toRotationMatrix();
+  };
   double tau = range / kSpeedOfLight;
   if (rx_e.norm() > 1e6) {
     tau = (s.p_e - rx_e).norm() / kSpeedOfLight;
-    const Eigen::Vector3d p1 = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau)) * s.p_e;
-    tau = (p1 - rx_e).norm() / kSpeedOfLight;
+    tau = (earthRotation(tau) * s.p_e - rx_e).norm() / kSpeedOfLight;
   }
-  const Eigen::Matrix3d R = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau));
+  const Eigen::Matrix3d R = earthRotation(tau);
   SatelliteAtReception out;
   out.p_e = R * s.p_e;
   out.v_e = R * s.v_e;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "common/math/sorted_by_key.h"
+
 namespace giocal {
 
 std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
@@ -17,11 +19,9 @@ std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
     for (const SignalObs& s : so.signals) {
       if (!std::isfinite(s.P) || !std::isfinite(s.D)) continue;
       const Key key{so.sat, s.band};
-      if (std::any_of(cands.begin(), cands.end(), [&](const Candidate& c) { return c.key == key; }))
-        continue;  // one signal per band
       const double rate = -kSpeedOfLight / carrierFrequency(so.sat.sys, s.band) * s.D;
       Candidate c{key, s.P, rate, 0.0, false};
-      const auto it = tracks_.find(key);
+      const auto it = findKey(tracks_, key);
       if (it != tracks_.end()) {
         const double dt = epoch.t - it->second.t;
         if (dt > 0.0 && dt <= options_.max_gap_s) {
@@ -32,6 +32,12 @@ std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
       cands.push_back(c);
     }
   }
+  // One signal per band, the first listed: sorted by key, the first of each key kept.
+  const auto by_key = [](const Candidate& a, const Candidate& b) { return a.key < b.key; };
+  std::stable_sort(cands.begin(), cands.end(), by_key);
+  cands.erase(std::unique(cands.begin(), cands.end(),
+                          [](const Candidate& a, const Candidate& b) { return a.key == b.key; }),
+              cands.end());
   // The receiver clock moves every pseudo-range alike: take the median jump as common.
   std::vector<double> jumps;
   for (const Candidate& c : cands) {
@@ -45,14 +51,11 @@ std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
     common = jumps[jumps.size() / 2];
   }
   std::set<Key> outliers;
-  std::map<Key, Track> next;
-  for (const auto& [key, tr] : tracks_) {
-    if (epoch.t - tr.t <= options_.max_gap_s) next[key] = tr;  // unseen this epoch: kept a while
-  }
+  next_.clear();
   for (const Candidate& c : cands) {
     Track tr{epoch.t, c.P, c.range_rate, 0};
     if (decide && c.tracked && std::abs(c.jump - common) > options_.threshold_m) {
-      const Track& old = tracks_.at(c.key);
+      const Track& old = findKey(tracks_, c.key)->second;
       if (old.rejected_in_row + 1 < options_.max_consecutive) {
         outliers.insert(c.key);
         // Keep predicting from the last good value so one outlier does not poison the next epoch.
@@ -60,9 +63,18 @@ std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
         tr.rejected_in_row = old.rejected_in_row + 1;
       }
     }
-    next[c.key] = tr;
+    next_.push_back({c.key, tr});
   }
-  tracks_ = std::move(next);
+  // Tracks unseen this epoch are kept a while.
+  const auto seen = static_cast<std::ptrdiff_t>(next_.size());
+  for (const auto& entry : tracks_) {
+    if (epoch.t - entry.second.t <= options_.max_gap_s &&
+        !std::binary_search(next_.begin(), next_.begin() + seen, entry, ByKey())) {
+      next_.push_back(entry);
+    }
+  }
+  std::inplace_merge(next_.begin(), next_.begin() + seen, next_.end(), ByKey());
+  std::swap(tracks_, next_);
   return outliers;
 }
 

@@ -4,9 +4,9 @@
 // (receiver clock) jump of all satellites is an outlier.
 #pragma once
 
-#include <map>
 #include <set>
 #include <utility>
+#include <vector>
 
 #include "common/gnss/observation.h"
 
@@ -35,7 +35,7 @@ class CodeOutlierCheck {
     int rejected_in_row = 0;
   };
   CodeOutlierOptions options_;
-  std::map<Key, Track> tracks_;
+  std::vector<std::pair<Key, Track>> tracks_, next_;  // sorted by key
 };
 
 }  // namespace giocal

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/math/median.h"
+#include "common/math/sorted_by_key.h"
 
 namespace giocal {
 
@@ -20,21 +21,6 @@ bool combinations(GnssSystem sys, const SignalObs* a, const SignalObs* b, double
   mw = (a->L - b->L) - (fa * a->P + fb * b->P) / (fa + fb) / lw;
   return true;
 }
-
-// The entry of `key` in a vector sorted by key, or end.
-template <class V, class K>
-auto findKey(V& v, const K& key) {
-  const auto it = std::lower_bound(v.begin(), v.end(), key,
-                                   [](const auto& e, const K& k) { return e.first < k; });
-  return it != v.end() && it->first == key ? it : v.end();
-}
-
-struct ByKey {
-  template <class A, class B>
-  bool operator()(const A& a, const B& b) const {
-    return a.first < b.first;
-  }
-};
 
 }  // namespace
 

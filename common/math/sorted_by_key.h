@@ -1,0 +1,25 @@
+// Vectors of (key, value) pairs kept sorted by key: the per-epoch tables of the GNSS checks,
+// rebuilt every epoch, where a std::map cost an allocation per entry.
+#pragma once
+
+#include <algorithm>
+
+namespace giocal {
+
+/// Orders (key, value) pairs by their keys.
+struct ByKey {
+  template <class A, class B>
+  bool operator()(const A& a, const B& b) const {
+    return a.first < b.first;
+  }
+};
+
+/// The entry of `key` in a vector of pairs sorted by key, or end().
+template <class V, class K>
+auto findKey(V& v, const K& key) {
+  const auto it = std::lower_bound(v.begin(), v.end(), key,
+                                   [](const auto& e, const K& k) { return e.first < k; });
+  return it != v.end() && it->first == key ? it : v.end();
+}
+
+}  // namespace giocal
