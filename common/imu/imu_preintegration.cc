@@ -43,6 +43,23 @@ struct Transition {
     out.template bottomRows<3>() = X_v + A_vr * X_r + B_va * Y_a + B_vg * Y_g;
     return out;
   }
+
+  /// F [X; Y] for X = (F P)^T's first nine rows and Y its last six, that is F P F^T's moving
+  /// block, which is symmetric: its block upper triangle is computed and mirrored (a third fewer
+  /// products, and exactly symmetric).
+  Eigen::Matrix<double, 9, 9> applySymmetric(const Eigen::Matrix<double, 9, 9>& X,
+                                             const Eigen::Matrix<double, 6, 9>& Y) const {
+    Eigen::Matrix<double, 9, 9> out;
+    const auto X_p = X.topRows<3>(), X_r = X.middleRows<3>(3), X_v = X.bottomRows<3>();
+    const auto Y_a = Y.topRows<3>(), Y_g = Y.bottomRows<3>();
+    out.topRows<3>() = X_p + dt * X_v + A_pr * X_r + B_pa * Y_a + B_pg * Y_g;
+    out.block<3, 6>(3, 3) = A_rr * X_r.rightCols<6>() + B_rg * Y_g.rightCols<6>();
+    out.block<3, 3>(6, 6) = X_v.rightCols<3>() + A_vr * X_r.rightCols<3>() +
+                            B_va * Y_a.rightCols<3>() + B_vg * Y_g.rightCols<3>();
+    out.block<6, 3>(3, 0) = out.block<3, 6>(0, 3).transpose();
+    out.block<3, 3>(6, 3) = out.block<3, 3>(3, 6).transpose();
+    return out;
+  }
 };
 
 }  // namespace
@@ -116,7 +133,7 @@ void ImuPreintegration::addStep(const Step& s) {
   // cov <- F cov F^T + noise: M = F cov (9 x 15), then F M^T; the bias rows do not move.
   const Eigen::Matrix<double, 9, 15> M = F.apply<15>(cov_.topRows<9>(), cov_.bottomRows<6>());
   Eigen::Matrix<double, 9, 9> C11 =
-      F.apply<9>(M.leftCols<9>().transpose(), M.rightCols<6>().transpose());
+      F.applySymmetric(M.leftCols<9>().transpose(), M.rightCols<6>().transpose());
   // Noise inputs: white gyro and accelerometer noise through the bias columns' blocks (a rate
   // error and a bias error enter alike), the bias random walks straight into the bias rows.
   const double sg = noise_.gyro_noise_density, sa = noise_.accel_noise_density;
