@@ -68,5 +68,32 @@ TEST(CodeOutlierCheck, ATrueStepIsAcceptedAfterAFewEpochs) {
   EXPECT_LE(flagged, CodeOutlierOptions().max_consecutive);
 }
 
+TEST(CodeOutlierCheck, TheFirstSignalOfABandCountsAndATrackOutlivesAMissedEpoch) {
+  // Satellites listed in falling PRN order, three of them with a second signal on L1 whose code
+  // drifts by 50 m per epoch: only the first listed signal of a band is checked. Satellite 2 misses epoch 5 and
+  // comes back with a 10 m jump, which its kept track sees.
+  CodeOutlierCheck check;
+  const double lambda = kSpeedOfLight / carrierFrequency(GnssSystem::kGps, '1');
+  std::vector<std::pair<int, int>> flagged;  // (epoch, prn)
+  for (int k = 0; k < 8; ++k) {
+    ObsEpoch e;
+    e.t = k;
+    for (int s = 7; s >= 0; --s) {
+      if (s == 1 && k == 5) continue;
+      SatObs so;
+      so.sat = SatId{GnssSystem::kGps, s + 1};
+      SignalObs sig;
+      sig.P = 2.1e7 + 40.0 * s * k + (s == 1 && k == 6 ? 10.0 : 0.0);
+      sig.D = -40.0 * s / lambda;
+      so.signals.push_back(sig);
+      sig.P += 50.0 * k;  // a second, bad tracking of the same band
+      if (s % 3 == 0) so.signals.push_back(sig);
+      e.sats.push_back(so);
+    }
+    for (const auto& key : check.check(e)) flagged.push_back({k, key.first.prn});
+  }
+  EXPECT_EQ(flagged, (std::vector<std::pair<int, int>>{{6, 2}}));
+}
+
 }  // namespace
 }  // namespace giocal
