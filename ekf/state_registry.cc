@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "common/math/rotation.h"
+#include "common/math/sorted_by_key.h"
 
 namespace giocal {
 
@@ -22,14 +24,16 @@ void StateRegistry::add(const StateBlock& block, const Eigen::VectorXd& value,
   P_.bottomRows(m).setZero();
   P_.rightCols(m).setZero();
   P_.bottomRightCorner(m, m) = covariance;
-  vars_[block.key] = {block, value, n};
+  const auto at = std::lower_bound(vars_.begin(), vars_.end(), block.key,
+                                   [](const auto& e, const StateKey& k) { return e.first < k; });
+  vars_.insert(at, {block.key, Variable{block, value, n}});
   order_.push_back(block.key);
 }
 
 void StateRegistry::remove(const StateKey& key) {
   const int off = offset(key);
   if (off >= 0) dropColumns(off, block(key).tangentSize());
-  vars_.erase(key);
+  vars_.erase(findKey(vars_, key));
   if (off >= 0) order_.erase(std::find(order_.begin(), order_.end(), key));
 }
 
@@ -62,7 +66,7 @@ void StateRegistry::condition(const std::vector<StateKey>& keys) {
       P_.noalias() -= (p / pkk) * p.transpose();
     }
     dropColumns(off, 1);
-    vars_.at(key).offset = -1;
+    get(key).offset = -1;
     order_.erase(std::find(order_.begin(), order_.end(), key));
   }
 }
@@ -78,29 +82,28 @@ void StateRegistry::clone(const StateKey& key, const StateKey& copy) {
   P_.block(dst, dst, m, m) = P_.block(src, src, m, m);
 }
 
-int StateRegistry::offset(const StateKey& key) const {
-  const auto it = vars_.find(key);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
-  return it->second.offset;
+const StateRegistry::Variable* StateRegistry::find(const StateKey& key) const {
+  const auto it = findKey(vars_, key);
+  return it == vars_.end() ? nullptr : &it->second;
 }
 
-const StateBlock& StateRegistry::block(const StateKey& key) const {
-  const auto it = vars_.find(key);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
-  return it->second.block;
+const StateRegistry::Variable& StateRegistry::get(const StateKey& key) const {
+  const Variable* v = find(key);
+  if (!v) throw std::out_of_range("no state variable '" + key.str() + "'");
+  return *v;
 }
 
-const Eigen::VectorXd& StateRegistry::value(const StateKey& key) const {
-  const auto it = vars_.find(key);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
-  return it->second.value;
+StateRegistry::Variable& StateRegistry::get(const StateKey& key) {
+  return const_cast<Variable&>(std::as_const(*this).get(key));
 }
 
-Eigen::VectorXd& StateRegistry::value(const StateKey& key) {
-  const auto it = vars_.find(key);
-  if (it == vars_.end()) throw std::out_of_range("no state variable '" + key.str() + "'");
-  return it->second.value;
-}
+int StateRegistry::offset(const StateKey& key) const { return get(key).offset; }
+
+const StateBlock& StateRegistry::block(const StateKey& key) const { return get(key).block; }
+
+const Eigen::VectorXd& StateRegistry::value(const StateKey& key) const { return get(key).value; }
+
+Eigen::VectorXd& StateRegistry::value(const StateKey& key) { return get(key).value; }
 
 Eigen::MatrixXd StateRegistry::marginal(const StateKey& key) const {
   const int m = block(key).tangentSize(), off = offset(key);
@@ -146,9 +149,9 @@ std::vector<BlockBinding> StateRegistry::bind(const std::vector<StateKey>& keys)
   std::vector<BlockBinding> out;
   out.reserve(keys.size());
   for (const StateKey& k : keys) {
-    const auto it = vars_.find(k);
-    if (it == vars_.end()) throw std::out_of_range("no state variable '" + k.str() + "' to bind");
-    out.push_back({it->second.value.data(), it->second.offset});
+    const Variable* v = find(k);
+    if (!v) throw std::out_of_range("no state variable '" + k.str() + "' to bind");
+    out.push_back({v->value.data(), v->offset});
   }
   return out;
 }

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <map>
+#include <utility>
 #include <vector>
 
 #include "common/models/measurement_rows.h"
@@ -30,7 +30,7 @@ class StateRegistry {
   void clone(const StateKey& key, const StateKey& copy);
 
   /// True for an estimated or a known variable.
-  bool has(const StateKey& key) const { return vars_.count(key) != 0; }
+  bool has(const StateKey& key) const { return find(key) != nullptr; }
   bool isKnown(const StateKey& key) const { return has(key) && offset(key) < 0; }
   /// The variable's first column in the covariance; -1 for a known variable.
   int offset(const StateKey& key) const;
@@ -64,7 +64,13 @@ class StateRegistry {
   };
   /// Drops the rows and columns [off, off + m) of the covariance.
   void dropColumns(int off, int m);
-  std::map<StateKey, Variable> vars_;
+  /// The variable of `key`, or null; `get` throws naming the key instead.
+  const Variable* find(const StateKey& key) const;
+  Variable& get(const StateKey& key);
+  const Variable& get(const StateKey& key) const;
+  // Sorted by key: a flat table (a tree cost an allocation per clone and a pointer chase per
+  // look-up, and the models look variables up on every update).
+  std::vector<std::pair<StateKey, Variable>> vars_;
   std::vector<StateKey> order_;
   Eigen::MatrixXd P_;
 };
