@@ -169,7 +169,7 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     rep.dd_rows = static_cast<int>(rows.size());
   }
 
-  updateDoppler(f, rover, ant_e, dt, rep);
+  updateDoppler(f, rover, ant_e, ep.rover_satellites, dt, rep);
 
   if (rep.used && options_.ambiguity_resolution) {
     std::vector<DdObservation> phase_rows;
@@ -182,9 +182,11 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
 }
 
 void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
-                               const Eigen::Vector3d& ant_e, double dt, GnssEpochReport& rep) {
+                               const Eigen::Vector3d& ant_e,
+                               const std::vector<RoverSatellite>& known, double dt,
+                               GnssEpochReport& rep) {
   std::vector<DopplerObservation> obs =
-      dopplerObservations(rover, orbits_, ant_e, options_.doppler);
+      dopplerObservations(rover, orbits_, ant_e, options_.doppler, known);
   if (obs.size() < 4) return;
   StateRegistry& s = f.state();
   const CalibrationFilter::Gyro gyro = f.gyroAt(rover.t);

@@ -32,7 +32,7 @@ class GnssUpdate {
  private:
   void resetAmbiguity(StateRegistry& s, const StateKey& key, double value, double lambda);
   void updateDoppler(CalibrationFilter& f, const ObsEpoch& rover, const Eigen::Vector3d& ant_e,
-                     double dt, GnssEpochReport& rep);
+                     const std::vector<RoverSatellite>& known, double dt, GnssEpochReport& rep);
   void resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
                           const std::vector<DdObservation>& phase_rows, GnssEpochReport& rep);
 

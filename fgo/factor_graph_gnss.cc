@@ -100,7 +100,7 @@ void FactorGraphCore::gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsE
   const GyroMean g = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                               in_.description.imu_noise.gyro_noise_density);
   e.gyro = g.rate;
-  e.doppler = dopplerObservations(rover, orbits_, ant_e, o_.doppler);
+  e.doppler = dopplerObservations(rover, orbits_, ant_e, o_.doppler, e.dd.rover_satellites);
   if (e.doppler.size() >= 4 && !clock_drift_started_) {
     // Start the clock drift from the median residual at zero drift.
     const DopplerModel m(frame_.R_e_n(), e.gyro, e.doppler);

@@ -50,8 +50,10 @@ DdEpoch DdEpochBuilder::build(const ObsEpoch& rover, const ObsEpoch& base,
     const SignalObs* bp = bo->bestOnBand(primaryBand(ro.sat.sys));
     if (!rp || !bp) continue;
     const auto sr = orbits_.atReception(ro.sat, rover.t, rp->P, rp->band, rover_e);
+    if (!sr) continue;
+    out.rover_satellites.push_back({ro.sat, rp->band, rp->P, *sr});
     const auto sb = orbits_.atReception(ro.sat, base.t, bp->P, bp->band, base_e_);
-    if (!sr || !sb) continue;
+    if (!sb) continue;
     SdGeometry g;
     g.sat = ro.sat;
     g.sat_at_rover_e = sr->p_e;

@@ -40,9 +40,19 @@ struct SdAmbiguity {
 /// covers code noise and multipath. The prior of every estimator's ambiguity states.
 inline double ambiguityStartVariance(double lambda) { return (10.0 / lambda) * (10.0 / lambda); }
 
+/// A satellite as the rover saw it: from the pseudo-range `code` on `band`, at the rover
+/// position the epoch was built for (the Doppler rows reuse it instead of solving the orbit again).
+struct RoverSatellite {
+  SatId sat;
+  char band = '1';
+  double code = 0.0;
+  SatelliteAtReception at;
+};
+
 struct DdEpoch {
   std::vector<SdGeometry> geometry;
-  std::vector<DdObservation> obs;  // phase and code rows
+  std::vector<RoverSatellite> rover_satellites;  // every one the orbits gave, in the rover's order
+  std::vector<DdObservation> obs;                // phase and code rows
   std::vector<std::pair<double, double>>
       undiff_variance;  // per geometry: {code, phase}, rover+base
   std::vector<SdAmbiguity> ambiguities;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/atmosphere.h"
@@ -11,7 +12,8 @@ namespace giocal {
 std::vector<DopplerObservation> dopplerObservations(const ObsEpoch& epoch,
                                                     const BroadcastOrbits& orbits,
                                                     const Eigen::Vector3d& rover_e,
-                                                    const DopplerOptions& options) {
+                                                    const DopplerOptions& options,
+                                                    const std::vector<RoverSatellite>& known) {
   std::vector<DopplerObservation> out;
   const double mask = options.elevation_mask_deg * M_PI / 180.0;
   const Topocentric sky(rover_e);
@@ -29,7 +31,11 @@ std::vector<DopplerObservation> dopplerObservations(const ObsEpoch& epoch,
       }
     }
     if (!sig) continue;
-    const auto sr = orbits.atReception(so.sat, epoch.t, sig->P, band, rover_e);
+    const auto k = std::find_if(known.begin(), known.end(), [&](const RoverSatellite& r) {
+      return r.sat == so.sat && r.band == band && r.code == sig->P;
+    });
+    const auto sr = k != known.end() ? std::optional<SatelliteAtReception>(k->at)
+                                     : orbits.atReception(so.sat, epoch.t, sig->P, band, rover_e);
     if (!sr) continue;
     DopplerObservation d;
     d.sat = so.sat;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/dd_epoch.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/weighting.h"
 
@@ -30,9 +31,11 @@ struct DopplerOptions {
 
 /// One Doppler per satellite (its primary band), for satellites with an ephemeris, above the mask
 /// and with finite code and Doppler. `rover_e`: the antenna's approximate ECEF position.
+/// `known`: satellites already solved at `rover_e` (a DdEpoch's), used where band and code match.
 std::vector<DopplerObservation> dopplerObservations(const ObsEpoch& epoch,
                                                     const BroadcastOrbits& orbits,
                                                     const Eigen::Vector3d& rover_e,
-                                                    const DopplerOptions& options);
+                                                    const DopplerOptions& options,
+                                                    const std::vector<RoverSatellite>& known = {});
 
 }  // namespace giocal
