@@ -70,8 +70,8 @@ TEST(CodeOutlierCheck, ATrueStepIsAcceptedAfterAFewEpochs) {
 
 TEST(CodeOutlierCheck, TheFirstSignalOfABandCountsAndATrackOutlivesAMissedEpoch) {
   // Satellites listed in falling PRN order, three of them with a second signal on L1 whose code
-  // drifts by 50 m per epoch: only the first listed signal of a band is checked. Satellite 2 misses epoch 5 and
-  // comes back with a 10 m jump, which its kept track sees.
+  // drifts by 50 m per epoch: only the first listed signal of a band is checked. Satellite 2
+  // misses epoch 5 and comes back with a 10 m jump, which its kept track sees.
   CodeOutlierCheck check;
   const double lambda = kSpeedOfLight / carrierFrequency(GnssSystem::kGps, '1');
   std::vector<std::pair<int, int>> flagged;  // (epoch, prn)
