@@ -283,8 +283,8 @@ void SlidingWindow::forEachWhitenedFactor(const std::vector<FactorLayout>& facto
         for (Eigen::Index a = 0; a < c; ++a) Jg.col(a) = Jw.col(cols[a]).segment(s0, k);
         Hg.setZero(c, c);
         Hg.selfadjointView<Eigen::Lower>().rankUpdate(Jg.transpose());
-        for (Eigen::Index b = 0; b < c; ++b) {
-          for (Eigen::Index a = b; a < c; ++a) Hf(cols[a], cols[b]) += Hg(a, b);
+        for (Eigen::Index j = 0; j < c; ++j) {
+          for (Eigen::Index i = j; i < c; ++i) Hf(cols[i], cols[j]) += Hg(i, j);
         }
       }
     } else {
