@@ -24,9 +24,7 @@ void StateRegistry::add(const StateBlock& block, const Eigen::VectorXd& value,
   P_.bottomRows(m).setZero();
   P_.rightCols(m).setZero();
   P_.bottomRightCorner(m, m) = covariance;
-  const auto at = std::lower_bound(vars_.begin(), vars_.end(), block.key,
-                                   [](const auto& e, const StateKey& k) { return e.first < k; });
-  vars_.insert(at, {block.key, Variable{block, value, n}});
+  vars_.insert(lowerBoundKey(vars_, block.key), {block.key, Variable{block, value, n}});
   order_.push_back(block.key);
 }
 
