@@ -8,6 +8,10 @@
 
 namespace giocal {
 
+std::vector<GnssSystem> defaultGnssSystems() {
+  return {GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou, GnssSystem::kQzss};
+}
+
 std::vector<char> ddBands(GnssSystem sys, int frequencies) {
   std::vector<char> b;
   if (sys == GnssSystem::kBeidou) {

@@ -16,11 +16,15 @@
 
 namespace giocal {
 
+/// GPS, Galileo, BeiDou and QZSS: the systems giocal uses by default (GLONASS's FDMA phases do
+/// not double-difference to integers). A function, not a brace list in each options struct:
+/// GCC 12 warned about such lists in the structs' inlined constructors.
+std::vector<GnssSystem> defaultGnssSystems();
+
 struct DdOptions {
   double elevation_mask_deg = 15.0;
   int frequencies = 2;  // 1, 2 or 3 (see ddBands)
-  std::vector<GnssSystem> systems{GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou,
-                                  GnssSystem::kQzss};
+  std::vector<GnssSystem> systems = defaultGnssSystems();
   ElevationNoise code{0.3};
   ElevationNoise phase{0.003};
   double keep_reference_elevation_deg = 30.0;

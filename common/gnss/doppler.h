@@ -25,8 +25,7 @@ struct DopplerObservation {
 struct DopplerOptions {
   ElevationNoise noise{0.3};  // the reference paper's 0.3 m/s at zenith
   double elevation_mask_deg = 15.0;
-  std::vector<GnssSystem> systems{GnssSystem::kGps, GnssSystem::kGalileo, GnssSystem::kBeidou,
-                                  GnssSystem::kQzss};
+  std::vector<GnssSystem> systems = defaultGnssSystems();
 };
 
 /// One Doppler per satellite (its primary band), for satellites with an ephemeris, above the mask
