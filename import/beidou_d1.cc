@@ -4,50 +4,28 @@
 #include <stdexcept>
 #include <string>
 
-#include "common/time/gps_time.h"
+#include "import/beidou_nav.h"
 
 namespace giocal::import {
 namespace {
 
-constexpr double kPi = 3.1415926535898;  // the value the ICD defines for the semicircle
-constexpr uint32_t kPreamble = 0x712;
-constexpr double kBdtWeekInGps = 1356.0;  // BDT week 0 began at GPS week 1356
-constexpr double kBdtBehindGps = 14.0;    // GPST - BDT [s]
-
 double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
-
-// Seconds of week of a subframe: 8 MSBs in word 1, 12 LSBs in word 2.
-uint32_t secondsOfWeek(const BitBuffer& sf) { return sf.u2(18, 8, 30, 12); }
-
-// GPS seconds of a BDT week and seconds of week, in the week nearest GPS time t_rx.
-double gpsFromBdt(uint32_t week, double sow, double t_rx) {
-  const double t = (kBdtWeekInGps + week) * kSecondsPerWeek + sow + kBdtBehindGps;
-  return t + std::round((t_rx - t) / kSecondsPerWeek) * kSecondsPerWeek;
-}
-
-// URA index to metres (the GPS table, which the ICD takes over).
-double uraMetres(int index) {
-  static constexpr double kUra[] = {2.4,  3.4,   4.85,  6.85,  9.65,   13.65,  24.0,  48.0,
-                                    96.0, 192.0, 384.0, 768.0, 1536.0, 3072.0, 6144.0};
-  return index >= 0 && index < 15 ? kUra[index] : 6144.0;
-}
 
 }  // namespace
 
-bool isBeidouGeo(int prn) { return (prn >= 1 && prn <= 5) || (prn >= 59 && prn <= 63); }
-
 std::optional<Ephemeris> decodeBeidouD1(const SatId& sat, const BitBuffer& sf1,
                                         const BitBuffer& sf2, const BitBuffer& sf3, double t_rx) {
-  const uint32_t sow1 = secondsOfWeek(sf1);
-  if (secondsOfWeek(sf2) != sow1 + 6 || secondsOfWeek(sf3) != sow1 + 12) return std::nullopt;
+  const uint32_t sow1 = beidouSecondsOfWeek(sf1);
+  if (beidouSecondsOfWeek(sf2) != sow1 + 6 || beidouSecondsOfWeek(sf3) != sow1 + 12)
+    return std::nullopt;
 
   Ephemeris e;
   e.sat = sat;
   e.health = static_cast<int>(sf1.u(42, 1));
   e.iodc = sf1.u(43, 5);  // AODC
-  e.accuracy = uraMetres(static_cast<int>(sf1.u(48, 4)));
+  e.accuracy = beidouUraMetres(static_cast<int>(sf1.u(48, 4)));
   const uint32_t week = sf1.u(60, 13);
-  e.toc = gpsFromBdt(week, sf1.u2(73, 9, 90, 8) * 8.0, t_rx);
+  e.toc = gpsSecondsFromBdt(week, sf1.u2(73, 9, 90, 8) * 8.0, t_rx);
   e.tgd = sf1.s(98, 10) * 1e-10;            // TGD1: B1I/B3I
   e.tgd2 = sf1.s2(108, 4, 120, 6) * 1e-10;  // TGD2: B2I/B3I
   e.af2 = scaled(sf1.s(214, 11), -66);
@@ -55,39 +33,31 @@ std::optional<Ephemeris> decodeBeidouD1(const SatId& sat, const BitBuffer& sf1,
   e.af1 = scaled(sf1.s2(257, 5, 270, 17), -50);
   e.iode = sf1.u(287, 5);  // AODE
 
-  e.delta_n = scaled(sf2.s2(42, 10, 60, 6), -43) * kPi;
+  e.delta_n = scaled(sf2.s2(42, 10, 60, 6), -43) * kBeidouPi;
   e.cuc = scaled(sf2.s2(66, 16, 90, 2), -31);
-  e.m0 = scaled(sf2.s2(92, 20, 120, 12), -31) * kPi;
+  e.m0 = scaled(sf2.s2(92, 20, 120, 12), -31) * kBeidouPi;
   e.e = scaled(sf2.u2(132, 10, 150, 22), -33);
   e.cus = scaled(sf2.s(180, 18), -31);
   e.crc = scaled(sf2.s2(198, 4, 210, 14), -6);
   e.crs = scaled(sf2.s2(224, 8, 240, 10), -6);
   e.sqrt_a = scaled(sf2.u2(250, 12, 270, 20), -19);
   const uint32_t toe = (sf2.u(290, 2) << 15) | sf3.u2(42, 10, 60, 5);
-  e.toe = gpsFromBdt(week, toe * 8.0, t_rx);
+  e.toe = gpsSecondsFromBdt(week, toe * 8.0, t_rx);
 
-  e.i0 = scaled(sf3.s2(65, 17, 90, 15), -31) * kPi;
+  e.i0 = scaled(sf3.s2(65, 17, 90, 15), -31) * kBeidouPi;
   e.cic = scaled(sf3.s2(105, 7, 120, 11), -31);
-  e.omega_dot = scaled(sf3.s2(131, 11, 150, 13), -43) * kPi;
+  e.omega_dot = scaled(sf3.s2(131, 11, 150, 13), -43) * kBeidouPi;
   e.cis = scaled(sf3.s2(163, 9, 180, 9), -31);
-  e.idot = scaled(sf3.s2(189, 13, 210, 1), -43) * kPi;
-  e.omega0 = scaled(sf3.s2(211, 21, 240, 11), -31) * kPi;
-  e.omega = scaled(sf3.s2(251, 11, 270, 21), -31) * kPi;
+  e.idot = scaled(sf3.s2(189, 13, 210, 1), -43) * kBeidouPi;
+  e.omega0 = scaled(sf3.s2(211, 21, 240, 11), -31) * kBeidouPi;
+  e.omega = scaled(sf3.s2(251, 11, 270, 21), -31) * kBeidouPi;
   return e;
 }
 
 std::optional<Ephemeris> BeidouD1Assembler::add(const SatId& sat,
                                                 const std::vector<uint32_t>& words, double t_rx) {
-  if (words.size() != 10) {
-    throw std::runtime_error(sat.str() + " D1 subframe of " + std::to_string(words.size()) +
-                             " words (10)");
-  }
-  BitBuffer sf(300);
-  for (int w = 0; w < 10; ++w) sf.put(30 * w, 30, words[static_cast<std::size_t>(w)] & 0x3FFFFFFF);
-  if (sf.u(0, 11) != kPreamble) {
-    throw std::runtime_error(sat.str() + " subframe without the D1 preamble");
-  }
-  const int id = static_cast<int>(sf.u(15, 3));
+  const BitBuffer sf = beidouSubframe(sat, words);
+  const int id = beidouSubframeId(sf);
   if (id < 1 || id > 5)
     throw std::runtime_error(sat.str() + " D1 subframe id " + std::to_string(id));
   if (id > 3) return std::nullopt;  // almanac and time offsets: not read

@@ -1,7 +1,6 @@
 // BeidouD1Assembler: BeiDou D1 navigation message subframes 1-3 of the MEO and IGSO satellites to
 // broadcast ephemerides (BDS-SIS-ICD-B1I-3.0 5.2.4; subframes as u-blox UBX-RXM-SFRBX delivers
-// them: ten 30-bit words, de-interleaved, data bits first). The GEO satellites' D2 message is not
-// read.
+// them: ten 30-bit words, de-interleaved, data bits first). The GEO satellites' D2: beidou_d2.h.
 #pragma once
 
 #include <array>
@@ -14,9 +13,6 @@
 #include "import/bit_buffer.h"
 
 namespace giocal::import {
-
-/// True for the BeiDou GEO satellites (PRN 1-5 and 59-63), which broadcast D2 instead of D1.
-bool isBeidouGeo(int prn);
 
 class BeidouD1Assembler {
  public:

@@ -14,13 +14,14 @@ void check(int pos, int len, int size) {
   }
 }
 
-int32_t signExtend(uint32_t v, int len) {
-  if (len == 0 || len == 32) return static_cast<int32_t>(v);
+}  // namespace
+
+int32_t twosComplement(uint32_t v, int len) {
+  if (len <= 0 || len >= 32) return static_cast<int32_t>(v);
+  v &= (1u << len) - 1u;
   const uint32_t sign = 1u << (len - 1);
   return static_cast<int32_t>((v ^ sign)) - static_cast<int32_t>(sign);
 }
-
-}  // namespace
 
 uint32_t BitBuffer::u(int pos, int len) const {
   check(pos, len, size());
@@ -31,7 +32,7 @@ uint32_t BitBuffer::u(int pos, int len) const {
   return v;
 }
 
-int32_t BitBuffer::s(int pos, int len) const { return signExtend(u(pos, len), len); }
+int32_t BitBuffer::s(int pos, int len) const { return twosComplement(u(pos, len), len); }
 
 uint32_t BitBuffer::u2(int pos1, int len1, int pos2, int len2) const {
   if (len1 + len2 > 32) throw std::out_of_range("split bit field wider than 32 bits");
@@ -39,7 +40,7 @@ uint32_t BitBuffer::u2(int pos1, int len1, int pos2, int len2) const {
 }
 
 int32_t BitBuffer::s2(int pos1, int len1, int pos2, int len2) const {
-  return signExtend(u2(pos1, len1, pos2, len2), len1 + len2);
+  return twosComplement(u2(pos1, len1, pos2, len2), len1 + len2);
 }
 
 void BitBuffer::put(int pos, int len, uint32_t value) {

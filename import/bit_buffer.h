@@ -7,6 +7,10 @@
 
 namespace giocal::import {
 
+/// The `len` low bits of `v` read as a two's-complement number (fields that the ICDs split across
+/// pages are put together first, then read with this).
+int32_t twosComplement(uint32_t v, int len);
+
 class BitBuffer {
  public:
   explicit BitBuffer(int bits) : bytes_(static_cast<std::size_t>((bits + 7) / 8), 0) {}

@@ -45,10 +45,10 @@ void readSubframe(const UbxFrame& f, double t_rx, NavAssemblers& nav, UbxLog& lo
       // I/NAV is on E1-B (1) and E5b-I (5); 0 is what drivers that leave this byte reserved
       // report. The pages' CRC tells I/NAV from anything else.
       eph = nav.inav.add(sat, words, t_rx);
-    } else if (sat.sys == GnssSystem::kBeidou && (sig == 0 || sig == 2 || sig == 4) &&
-               !isBeidouGeo(sat.prn)) {
-      // D1 on B1I (0), B2I (2) and B3I (4) of the MEO and IGSO satellites.
-      eph = nav.d1.add(sat, words, t_rx);
+    } else if (sat.sys == GnssSystem::kBeidou && sig >= 0 && sig <= 4) {
+      // B1I (D1 0, D2 1), B2I (2, 3) and B3I (4 on the X20): the GEO satellites broadcast D2,
+      // the MEO and IGSO satellites D1, on each of them.
+      eph = isBeidouGeo(sat) ? nav.d2.add(sat, words, t_rx) : nav.d1.add(sat, words, t_rx);
     } else {
       ++log.subframes_not_read;
       return;

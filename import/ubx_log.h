@@ -9,6 +9,7 @@
 #include "common/gnss/observation.h"
 #include "common/gnss/rinex_nav.h"
 #include "import/beidou_d1.h"
+#include "import/beidou_d2.h"
 #include "import/galileo_inav.h"
 #include "import/gps_lnav.h"
 #include "import/rawx_decoder.h"
@@ -38,6 +39,7 @@ struct NavAssemblers {
   GpsLnavAssembler lnav;
   GalileoInavAssembler inav;
   BeidouD1Assembler d1;
+  BeidouD2Assembler d2;
 };
 
 class UbxDecoder {

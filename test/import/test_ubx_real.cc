@@ -21,35 +21,20 @@
 #include "common/gnss/rinex_obs_writer.h"
 #include "common/gnss/spp.h"
 #include "import/ubx_log.h"
+#include "import/ubx_reference.h"
 #include "temp_dir.h"
 
 namespace giocal {
 namespace {
 
+using test::compareEphemerides;
+using test::convbin;
+using test::Converted;
+using test::giocalImport;
+
 const std::string kLog = std::string(GIOCAL_SOURCE_DIR) + "/data/real/ublox-f9p-walk/gnss_1730.ubx";
 const std::string kPos =
     std::string(GIOCAL_SOURCE_DIR) + "/data/real/ublox-f9p-walk/gnss_1730_sf.pos";
-
-struct Converted {
-  ObsData obs;
-  NavData nav;
-};
-
-Converted convbin(const test::TempDir& dir) {
-  const std::string cmd = "convbin -r ubx -v 3.04 -od -os -oi -ot -o " + dir.file("cb.obs") +
-                          " -n " + dir.file("cb.nav") + " " + kLog + " > /dev/null 2>&1";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << "convbin (Debian package rtklib) must be installed";
-  return {readRinexObs(dir.file("cb.obs")), readRinexNav(dir.file("cb.nav"))};
-}
-
-Converted giocalImport(const test::TempDir& dir, import::UbxLog& log) {
-  log = import::readUbxLog(kLog);
-  RinexObsHeader h;
-  h.obs_types = log.obs.header.obs_types;
-  writeRinexObs(dir.file("g.obs"), h, log.obs.epochs);
-  writeRinexNav(dir.file("g.nav"), log.nav, "test");
-  return {readRinexObs(dir.file("g.obs")), readRinexNav(dir.file("g.nav"))};
-}
 
 using SignalKey = std::tuple<double, SatId, char, char>;
 
@@ -71,8 +56,8 @@ double diff(double a, double b) {
 TEST(UbxRealLog, EveryObservationAgreesWithConvbin) {
   test::TempDir dir;
   import::UbxLog log;
-  const Converted ours = giocalImport(dir, log);
-  const Converted ref = convbin(dir);
+  const Converted ours = giocalImport(dir, kLog, log);
+  const Converted ref = convbin(dir, kLog);
   ASSERT_EQ(ours.obs.epochs.size(), ref.obs.epochs.size());
   EXPECT_EQ(ours.obs.epochs.size(), 536u);  // SOURCE.txt
   // convbin 2.4.3 knows neither the L5, E5a, E6 nor any BeiDou signal id of this X20 log: those
@@ -120,55 +105,11 @@ TEST(UbxRealLog, EveryObservationAgreesWithConvbin) {
   EXPECT_FALSE(log.stream.truncated_end);
 }
 
-// Every ephemeris of `sys` convbin decodes is giocal's too, equal in every field; returns how
-// many were compared.
-int compareEphemerides(const Converted& ours, const Converted& ref, GnssSystem sys) {
-  int compared = 0;
-  for (const Ephemeris& r : ref.nav.ephemerides) {
-    if (r.sat.sys != sys) continue;
-    const Ephemeris* o = nullptr;
-    for (const Ephemeris& e : ours.nav.ephemerides) {
-      if (e.sat == r.sat && e.iode == r.iode) o = &e;
-    }
-    EXPECT_NE(o, nullptr) << r.sat.str() << " IODE " << r.iode << " missing";
-    if (!o) continue;
-    ++compared;
-    const double fields[][2] = {{o->toe, r.toe},
-                                {o->toc, r.toc},
-                                {o->af0, r.af0},
-                                {o->af1, r.af1},
-                                {o->af2, r.af2},
-                                {o->crs, r.crs},
-                                {o->crc, r.crc},
-                                {o->cus, r.cus},
-                                {o->cuc, r.cuc},
-                                {o->cis, r.cis},
-                                {o->cic, r.cic},
-                                {o->delta_n, r.delta_n},
-                                {o->m0, r.m0},
-                                {o->e, r.e},
-                                {o->sqrt_a, r.sqrt_a},
-                                {o->omega0, r.omega0},
-                                {o->i0, r.i0},
-                                {o->omega, r.omega},
-                                {o->omega_dot, r.omega_dot},
-                                {o->idot, r.idot},
-                                {o->tgd, r.tgd},
-                                {o->tgd2, r.tgd2},
-                                {o->iodc, r.iodc}};
-    for (const auto& f : fields) {
-      EXPECT_NEAR(f[0], f[1], 1e-11 * std::max(1.0, std::abs(f[1]))) << r.sat.str();
-    }
-    EXPECT_EQ(o->health, r.health) << r.sat.str();
-  }
-  return compared;
-}
-
 TEST(UbxRealLog, GpsEphemeridesAgreeWithConvbin) {
   test::TempDir dir;
   import::UbxLog log;
-  const Converted ours = giocalImport(dir, log);
-  const Converted ref = convbin(dir);
+  const Converted ours = giocalImport(dir, kLog, log);
+  const Converted ref = convbin(dir, kLog);
   EXPECT_GE(compareEphemerides(ours, ref, GnssSystem::kGps), 4);  // convbin's 4 in the 134 s
 }
 
@@ -201,7 +142,7 @@ double median(std::vector<double> v) {
 TEST(UbxRealLog, GalileoEphemeridesPositionTheReceiverAsGpsDoes) {
   test::TempDir dir;
   import::UbxLog log;
-  const Converted ours = giocalImport(dir, log);
+  const Converted ours = giocalImport(dir, kLog, log);
   int galileo = 0;
   for (const Ephemeris& e : ours.nav.ephemerides) galileo += e.sat.sys == GnssSystem::kGalileo;
   const auto gal = sppEnu(ours.obs, ours.nav, GnssSystem::kGalileo);
@@ -234,8 +175,8 @@ TEST(UbxRealLog, GalileoEphemeridesPositionTheReceiverAsGpsDoes) {
 TEST(UbxRealLog, BeidouD1EphemeridesAgreeWithConvbin) {
   test::TempDir dir;
   import::UbxLog log;
-  const Converted ours = giocalImport(dir, log);
-  const Converted ref = convbin(dir);
+  const Converted ours = giocalImport(dir, kLog, log);
+  const Converted ref = convbin(dir, kLog);
   // The X20 log carries D1 on B3I; convbin decodes the MEO/IGSO satellites' whole frames.
   const int compared = compareEphemerides(ours, ref, GnssSystem::kBeidou);
   EXPECT_GE(compared, 4);
