@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 
 #include "common/calibration/calibration_run.h"
@@ -62,6 +63,18 @@ CalibrationSource fromSummary(const std::string& path) {
   return s;
 }
 
+// The last row of `path` at or before time t, or none when the file does not exist or has none.
+std::optional<std::vector<double>> rowAt(const std::string& path,
+                                         const std::vector<std::string>& header, double t) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  const CsvTable table = readCsvTable(path, header, {});
+  std::optional<std::vector<double>> row;
+  for (const auto& r : table.rows) {
+    if (r[0] <= t + 1e-9) row = r;
+  }
+  return row;
+}
+
 CalibrationSource fromCsvAt(const std::string& path, double seconds, double t0) {
   const CsvTable table = readCsvTable(path, calibrationCsvHeader(), {});
   const std::vector<double>* row = nullptr;
@@ -86,6 +99,17 @@ CalibrationSource fromCsvAt(const std::string& path, double seconds, double t0) 
   // The file has roll/pitch/yaw sigmas only: taken as the tangent's (equal for small angles).
   s.calibration.sd_rpy_b_m = Eigen::Vector3d(r[14], r[15], r[16]) * kDegToRad;
   s.label = path + "@" + fixedText(seconds, 1);
+  // The optional states' histories beside it, at the same row's time (a run that estimated them
+  // would dead-reckon with them from its summary.json too).
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (const auto d = rowAt((dir / "odometer_delay.csv").string(), odometerDelayCsvHeader(), r[0]))
+    s.odometer_delay_s = (*d)[1];
+  if (const auto g = rowAt((dir / "gyro_tilt.csv").string(), gyroTiltCsvHeader(), r[0])) {
+    s.gyro_tilt = Eigen::Vector2d((*g)[1], (*g)[2]) * kDegToRad;
+    s.gyro_tilt_sd = std::max((*g)[3], (*g)[4]) * kDegToRad;
+    if (!s.gyro_tilt.allFinite() || !(s.gyro_tilt_sd > 0.0))
+      throw DataError((dir / "gyro_tilt.csv").string(), 0, "tilt or its sd not finite");
+  }
   return s;
 }
 

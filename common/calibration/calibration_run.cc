@@ -112,6 +112,16 @@ const std::vector<std::string>& calibrationCsvHeader() {
   return h;
 }
 
+const std::vector<std::string>& gyroTiltCsvHeader() {
+  static const std::vector<std::string> h{"t", "tilt_x", "tilt_y", "sd_tilt_x", "sd_tilt_y"};
+  return h;
+}
+
+const std::vector<std::string>& odometerDelayCsvHeader() {
+  static const std::vector<std::string> h{"t", "t_d_odo", "sd_t_d_odo"};
+  return h;
+}
+
 std::vector<double> calibrationCsvRow(const CalibrationEstimate& e) {
   const Eigen::Vector3d rpy = rpyDeg(e.calib.q_b_m);
   const Eigen::Matrix<double, 8, 1> sd = e.sigma();

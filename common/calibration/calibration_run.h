@@ -99,6 +99,10 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
 /// The calibration.csv header and the row of one estimate.
 const std::vector<std::string>& calibrationCsvHeader();
 std::vector<double> calibrationCsvRow(const CalibrationEstimate& e);
+/// The header of gyro_tilt.csv and of odometer_delay.csv, the histories of the optional states
+/// beside calibration.csv (degrees; seconds).
+const std::vector<std::string>& gyroTiltCsvHeader();
+const std::vector<std::string>& odometerDelayCsvHeader();
 
 /// A navigation state of the local frame n (origin `frame`) as a truth.csv row: IMU origin in
 /// degrees and metres, velocity and attitude in the local-level ENU frame at that position.

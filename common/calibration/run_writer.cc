@@ -3,6 +3,8 @@
 #include <cmath>
 #include <iomanip>
 
+#include "common/math/rotation.h"
+
 namespace giocal {
 namespace {
 
@@ -36,13 +38,23 @@ void RunWriter::gnssEpoch(const GnssEpochRecord& g) {
 
 void RunWriter::estimate(const CalibrationEstimate& e) {
   writeRow(calibration_, calibrationCsvRow(e));
-  // The delay has its own file: calibration.csv's columns are a fixed contract (the brief).
-  if (!std::isfinite(e.odometer_delay_s)) return;
-  if (!delay_) {
-    delay_ = &set_.open(prefix_ + "odometer_delay.csv");
-    writeHeader(*delay_, {"t", "t_d_odo", "sd_t_d_odo"});
+  // The delay and the tilt have files of their own: calibration.csv's columns are a fixed
+  // contract (the brief).
+  if (std::isfinite(e.odometer_delay_s)) {
+    if (!delay_) {
+      delay_ = &set_.open(prefix_ + "odometer_delay.csv");
+      writeHeader(*delay_, odometerDelayCsvHeader());
+    }
+    writeRow(*delay_, {e.t, e.odometer_delay_s, e.odometer_delay_sd_s});
   }
-  writeRow(*delay_, {e.t, e.odometer_delay_s, e.odometer_delay_sd_s});
+  if (e.gyro_tilt.allFinite()) {
+    if (!tilt_) {
+      tilt_ = &set_.open(prefix_ + "gyro_tilt.csv");
+      writeHeader(*tilt_, gyroTiltCsvHeader());
+    }
+    const Eigen::Vector2d deg = e.gyro_tilt * kRadToDeg, sd_deg = e.gyro_tilt_sd * kRadToDeg;
+    writeRow(*tilt_, {e.t, deg.x(), deg.y(), sd_deg.x(), sd_deg.y()});
+  }
 }
 
 void RunWriter::trajectory(const TruthSample& s) { writeRow(trajectory_, truthCsvRow(s)); }
@@ -53,6 +65,7 @@ void RunWriter::finish(const CalibrationRun& run, const OdometerCalibration* tru
     files[name] = set_.close(prefix_ + name);
   }
   if (delay_) files["odometer_delay.csv"] = set_.close(prefix_ + "odometer_delay.csv");
+  if (tilt_) files["gyro_tilt.csv"] = set_.close(prefix_ + "gyro_tilt.csv");
   set_.open(prefix_ + "summary.json", true) << summaryJson(run, truth, files);
 }
 

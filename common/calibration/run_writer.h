@@ -1,6 +1,7 @@
 // RunWriter: writes a calibration run's outputs into an OutputSet as the run goes
 // (calibration.csv, trajectory.csv and gnss.csv row by row, so memory stays flat; with the
-// odometer delay estimated, odometer_delay.csv beside calibration.csv), then
+// odometer delay estimated, odometer_delay.csv beside calibration.csv, with the gyro's tilt,
+// gyro_tilt.csv), then
 // summary.json naming the others with their sizes; the set moves them into place together
 // (io/output_set.h).
 #pragma once
@@ -31,6 +32,7 @@ class RunWriter : public RunSink {
   std::ostream& trajectory_;
   std::ostream& gnss_;
   std::ostream* delay_ = nullptr;  // opened at the first estimate that has the delay state
+  std::ostream* tilt_ = nullptr;   // opened at the first estimate that has the gyro's tilt
 };
 
 }  // namespace giocal

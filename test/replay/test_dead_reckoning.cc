@@ -7,6 +7,7 @@
 #include "common/calibration/run_writer.h"
 #include "common/io/data_error.h"
 #include "common/io/output_set.h"
+#include "common/math/rotation.h"
 #include "replay/calibration_source.h"
 #include "replay/dead_reckoning.h"
 #include "replay/replay.h"
@@ -165,6 +166,57 @@ TEST(CalibrationSource, ReadsRunsRowsTruthAndGuessAndSaysWhatIsWrong) {
   std::ofstream(dir.file("run/calibration.csv"), std::ios::app) << "1,2,3\n";
   EXPECT_THROW(readCalibrationSource(dir.file("run/summary.json"), drive.in), DataError);
   EXPECT_THROW(readCalibrationSource("nonsense", drive.in), std::runtime_error);
+}
+
+TEST(CalibrationSource, ARowOfCalibrationCsvBringsTheDelayAndGyroTiltOfItsTime) {
+  // calibration.csv's columns are the brief's: the optional states' histories lie beside it, and
+  // a row taken from it must bring them (the dead-reckoning bench takes each scene's calibration
+  // so; without them its rows dropped an estimated tilt that the truth's row applied).
+  const Drive drive(62);
+  const test::TempDir& dir = drive.dir;
+  CalibrationRun run;
+  run.estimator = "fgo";
+  CalibrationEstimate e;
+  e.t = drive.in.rover.epochs.front().t + 50.0;
+  e.cov = Eigen::Matrix<double, 8, 8>::Identity() * 4e-6;
+  e.odometer_delay_s = 0.031;
+  e.odometer_delay_sd_s = 0.002;
+  e.gyro_tilt = Eigen::Vector2d(0.01, -0.02) * kDegToRad;
+  e.gyro_tilt_sd = Eigen::Vector2d(0.004, 0.005) * kDegToRad;
+  {
+    OutputSet set(dir.file("run"));
+    RunWriter writer(set);
+    writer.estimate(e);
+    CalibrationEstimate later = e;
+    later.t += 100.0;
+    later.odometer_delay_s = 0.041;
+    later.gyro_tilt = Eigen::Vector2d(0.03, 0.04) * kDegToRad;
+    writer.estimate(later);
+    run.latest = later;
+    writer.finish(run, nullptr);
+    set.commit();
+  }
+  std::ifstream header_of(dir.file("run/gyro_tilt.csv"));
+  std::string header;
+  std::getline(header_of, header);
+  EXPECT_EQ(header, "t,tilt_x,tilt_y,sd_tilt_x,sd_tilt_y");
+  const CalibrationSource at60 =
+      readCalibrationSource(dir.file("run/calibration.csv@60"), drive.in);
+  EXPECT_NEAR(at60.odometer_delay_s, 0.031, 1e-12);
+  EXPECT_NEAR(at60.gyro_tilt.x() * kRadToDeg, 0.01, 1e-12);
+  EXPECT_NEAR(at60.gyro_tilt.y() * kRadToDeg, -0.02, 1e-12);
+  EXPECT_NEAR(at60.gyro_tilt_sd * kRadToDeg, 0.005, 1e-12);
+  const CalibrationSource at200 =
+      readCalibrationSource(dir.file("run/calibration.csv@200"), drive.in);
+  EXPECT_NEAR(at200.odometer_delay_s, 0.041, 1e-12);
+  EXPECT_NEAR(at200.gyro_tilt.y() * kRadToDeg, 0.04, 1e-12);
+  // The end of the run from its summary.json: the same values as its last row.
+  const CalibrationSource end = readCalibrationSource(dir.file("run/summary.json"), drive.in);
+  EXPECT_NEAR(end.gyro_tilt.y(), at200.gyro_tilt.y(), 1e-12);
+  EXPECT_NEAR(end.odometer_delay_s, at200.odometer_delay_s, 1e-12);
+  // A history that is not one (another header) is named.
+  std::ofstream(dir.file("run/gyro_tilt.csv")) << "t,x,y\n";
+  EXPECT_THROW(readCalibrationSource(dir.file("run/calibration.csv@60"), drive.in), DataError);
 }
 
 }  // namespace
