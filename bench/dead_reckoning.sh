@@ -5,7 +5,9 @@
 # of its four scenes (open sky, few trees, more trees, building), and dead-reckon a separate test
 # drive of the same robot (bench/field_test_drive.yaml: another route, seed + 1000: new noise)
 # through 1000 s without GNSS after 100 s with it. Prints horizontal MAX and RMSE per scene and
-# scheme (mean over seeds), the initial guess, and the true calibration as the floor.
+# scheme (mean over seeds), the initial guess, and the true calibration as the floor; and
+# "draw": the truth plus an error drawn from TC-AR's own sigmas at that scene
+# (bench/draw_calibration.py), what an estimator as precise as TC-AR claims would give.
 # Usage: bench/dead_reckoning.sh [--gyro-tilt] [--shard k/n] [--results <file.csv>] [seed...]
 #          (--gyro-tilt: every calibration also estimates the gyro's tilt against the
 #          accelerometer, calibration.estimate_gyro_tilt, and dead reckoning applies it)
@@ -85,6 +87,13 @@ for seed in "${seeds[@]}"; do
         if [ "$scene" = end ]; then source="$work/run/summary.json"
         else source="$work/run/calibration.csv@$scene"; fi
         dr "$seed" "$scheme-$est" "$scene" "$source"
+        if [ "$scheme" = TC-AR ]; then
+          # The truth with an error drawn from this run's sigmas: what its sigma alone costs.
+          python3 "$root/bench/draw_calibration.py" "$work/run" "$work/cal_$seed" "$scene" \
+            "$work/draw" "$seed"
+          at="$scene"; [ "$scene" = end ] && at=100000
+          dr "$seed" "draw-$est" "$scene" "$work/draw/calibration.csv@$at"
+        fi
       done
     done
   done
@@ -102,6 +111,7 @@ schemes = ["guess", "LC-ekf", "TC-WAR-ekf", "TC-AR-ekf", "LC-fgo", "TC-WAR-fgo",
 v = collections.defaultdict(list)
 for r in rows:
     v[(r["scheme"], r["scene"])].append((float(r["max"]), float(r["rmse"])))
+schemes += [s for s in ["draw-ekf", "draw-fgo"] if any(k[0] == s for k in v)]
 print("dead reckoning of the test drive, 1000 s without GNSS; horizontal MAX / RMSE [m], mean of "
       "seeds %s; calibration taken at the end of each scene of the calibration drive" % " ".join(seeds))
 print("%-12s" % "scheme" + "".join("%22s" % names[s] for s in scenes))
@@ -119,6 +129,12 @@ for est in ["ekf", "fgo"]:
         tr = sum(a for a, _ in v[("truth", s)]) / len(seeds)
         ratios.append("%22.2f" % (ar / tr))
     print("%-12s" % ("TC-AR-" + est) + "".join(ratios))
+for est in ["ekf", "fgo"]:  # the truth with errors of TC-AR's sigmas, when the rows have it
+    if not any(k[0] == "draw-" + est for k in v):
+        continue
+    print("%-12s" % ("draw-" + est) + "".join(
+        "%22.2f" % (sum(a for a, _ in v[("draw-" + est, s)]) / sum(a for a, _ in v[("truth", s)]))
+        for s in scenes))
 print("TC-AR better than LC and TC-WAR (MAX), per scene:")
 for est in ["ekf", "fgo"]:
     cells = []
