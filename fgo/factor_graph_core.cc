@@ -63,12 +63,16 @@ void FactorGraphCore::feedMotion(double t, const Eigen::Vector3d& b_g) {
     return std::upper_bound(v.begin(), v.end(), motion_fed_t_,
                             [](double x, const auto& s) { return x < s.t; });
   };
-  for (auto it = after(in_.imu); it != in_.imu.end() && it->t <= t; ++it) {
-    motion_.addImu(it->t, it->gyro - b_g);
-  }
+  auto imu = after(in_.imu);
+  const auto feedImuTo = [&](double until) {
+    for (; imu != in_.imu.end() && imu->t <= until; ++imu) motion_.addImu(imu->t, imu->gyro - b_g);
+  };
   for (auto it = after(in_.odom); it != in_.odom.end() && it->t <= t; ++it) {
+    feedImuTo(it->t);
     motion_.addOdometer(it->t, it->v);
+    nhc_samples_ += motion_.nhcApplies();
   }
+  feedImuTo(t);
   motion_fed_t_ = t;
 }
 
@@ -283,13 +287,17 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     }
   }
   if (motion_.nhcApplies()) {
+    // The EKF applies NHC at every odometer sample where it holds; one factor per epoch carries
+    // the information of those samples, so that both estimators weigh the constraint alike.
     const GyroMean g = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                                 in_.description.imu_noise.gyro_noise_density);
-    w_.addFactor({planar(std::make_shared<NhcModel>(g.rate, o_.models.nhc_sigma)),
+    const double sigma = o_.models.nhc_sigma / std::sqrt(std::max(1, nhc_samples_));
+    w_.addFactor({planar(std::make_shared<NhcModel>(g.rate, sigma)),
                   {e.v, e.q, e.bg, kPbm, kQbm},
                   0.0,
                   "nhc"});
   }
+  nhc_samples_ = 0;  // this epoch's samples only
   const PositionFix* fix = nullptr;
   if (o_.loosely_coupled) {
     fix = fixAt(in_.positions, e.t, kPositionTolerance);

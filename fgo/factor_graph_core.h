@@ -63,6 +63,8 @@ class FactorGraphCore : public EstimatorCore {
   NavState nav(const FgoEpoch& e) const;
   /// The gyro's tilt where it is estimated (calibration.estimate_gyro_tilt), else none.
   std::optional<GyroTilt> gyroTilt() const;
+  /// Feeds the motion detector up to t, the IMU samples up to each odometer sample before it (as
+  /// the EKF does), and counts the odometer samples at which NHC applies (nhc_samples_).
   void feedMotion(double t, const Eigen::Vector3d& b_g);
   void start(const InitialState& init);
   CalibrationEstimate estimate(const FgoEpoch& e) const;
@@ -106,6 +108,7 @@ class FactorGraphCore : public EstimatorCore {
   std::map<std::pair<SatId, char>, int> amb_version_;
   std::set<std::pair<StateKey, StateKey>> held_fixes_;
   double motion_fed_t_ = -INFINITY;
+  int nhc_samples_ = 0;  // odometer samples since the last NHC factor at which NHC applied
   double next_output_ = 0.0;
   bool clock_drift_started_ = false;
   std::vector<TruthSample> trajectory_;  // computed with the epoch, handed out by trajectoryUpTo
