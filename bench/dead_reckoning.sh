@@ -19,7 +19,7 @@
 #   bench/dead_reckoning.sh --merge dr1.csv dr2.csv
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-giocal="$root/build/apps/giocal"
+giocal="${GIOCAL_BIN:-$root/build/apps/giocal}"  # GIOCAL_BIN: another build
 shard=1 shards=1 keep="" merge=() tilt=0
 while [ $# -gt 0 ]; do
   case "$1" in
