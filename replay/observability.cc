@@ -11,6 +11,7 @@
 #include "common/models/state_block.h"
 #include "ekf/calibration_filter.h"
 #include "ekf/imu_propagation.h"
+#include "replay/ideal_imu.h"
 
 namespace giocal {
 namespace {
@@ -198,10 +199,20 @@ ObservabilityReport analyzeObservability(const CalibrationInputs& in, const Obse
   CalibrationOptions options = job.options;
   options.loosely_coupled = true;
   options.hold_calibration = false;
-  const Pass pass = runPass(in, job, options);
+  // Along a reference, the IMU is the reference's own motion: the recorded samples' noise in the
+  // propagation's Jacobians makes the near-unobservable heading split look observable (paper
+  // preset: extrinsic yaw sigma 2.8 deg where noise-free data give 4.7 deg to the advisor and
+  // both estimators alike, and the Monte Carlo's errors imply 4.6 deg; docs/results.md).
+  std::optional<CalibrationInputs> ideal;
+  if (job.reference) {
+    ideal = in;
+    ideal->imu = idealImuAlong(*job.reference, in.imu);
+  }
+  const CalibrationInputs& used = ideal ? *ideal : in;
+  const Pass pass = runPass(used, job, options);
   CalibrationOptions free_z = options;
   free_z.hold_p_b_m_z = false;
-  const Pass pass_z = runPass(in, job, free_z);
+  const Pass pass_z = runPass(used, job, free_z);
 
   ObservabilityReport r;
   r.linearized_at_reference = job.reference.has_value();
