@@ -52,9 +52,37 @@ printf '\x06456300.000 30.4447873701 114.4718632047 20.899 0.005 0.004 0.01\n456
   > "$out/fuzz_csv_logs/corpus/i2nav_pos"
 printf '\x072218 456300.000 30.4447873701 114.4718632047 20.899 0.0 0.0 0.0 0.854 -2.034 185.702\n2218 456300.005 30.4447873701 114.4718632047 20.899 0.01 0.0 0.0 0.854 -2.034 185.702\n' \
   > "$out/fuzz_csv_logs/corpus/i2nav_nav"
-# The real F9P log in pieces of 20 kB (a whole log is slow per execution).
+# The real F9P log in pieces of 20 kB (a whole log is slow per execution), and its first piece
+# followed by a cycle of BeiDou D2 pages 1-10 of a GEO satellite (the log has none).
 if [ -d "$out/fuzz_ubx" ]; then
   split -b 20000 -a 3 "$root/data/real/ublox-f9p-walk/gnss_1730.ubx" "$out/fuzz_ubx/corpus/seed"
+  python3 - "$root/data/real/ublox-f9p-walk/gnss_1730.ubx" "$out/fuzz_ubx/corpus/geo_d2" <<'PY'
+import random, struct, sys
+rng = random.Random(3)
+def frame(cls, mid, payload):
+    body = bytes([cls, mid]) + struct.pack("<H", len(payload)) + payload
+    a = b = 0
+    for x in body:
+        a = (a + x) & 255
+        b = (b + a) & 255
+    return b"\xb5\x62" + body + bytes([a, b])
+log, out, k = open(sys.argv[1], "rb").read(), b"", 0
+while len(out) < 15000:  # whole UBX frames of the log's start
+    k = log.index(b"\xb5\x62", k)
+    n = 8 + struct.unpack("<H", log[k + 4:k + 6])[0]
+    out, k = out + log[k:k + n], k + n
+for page in range(1, 11):
+    bits = rng.getrandbits(300)
+    def put(pos, length, value):
+        global bits
+        shift = 300 - pos - length
+        bits = (bits & ~(((1 << length) - 1) << shift)) | (value << shift)
+    sow = 345600 + 3 * (page - 1)
+    put(0, 11, 0x712); put(15, 3, 1); put(18, 8, sow >> 12); put(30, 12, sow & 0xFFF); put(42, 4, page)
+    words = [(bits >> (30 * (9 - w))) & 0x3FFFFFFF for w in range(10)]
+    out += frame(0x02, 0x13, bytes([3, 3, 1, 0, 10, 0, 2, 0]) + b"".join(struct.pack("<I", w) for w in words))
+open(sys.argv[2], "wb").write(out)
+PY
 fi
 # ROS messages: the first byte picks ROS 1 or CDR, then a definition, a NUL and message bytes.
 if [ -d "$out/fuzz_ros_message" ]; then
