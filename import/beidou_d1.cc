@@ -57,18 +57,13 @@ std::optional<Ephemeris> decodeBeidouD1(const SatId& sat, const BitBuffer& sf1,
 std::optional<Ephemeris> BeidouD1Assembler::add(const SatId& sat,
                                                 const std::vector<uint32_t>& words, double t_rx) {
   const BitBuffer sf = beidouSubframe(sat, words);
-  const int id = beidouSubframeId(sf);
-  if (id < 1 || id > 5)
-    throw std::runtime_error(sat.str() + " D1 subframe id " + std::to_string(id));
+  const int id = beidouSubframeId(sat, sf, "D1");
   if (id > 3) return std::nullopt;  // almanac and time offsets: not read
   auto& f = frames_[sat];
   f[static_cast<std::size_t>(id - 1)] = sf;
   if (id != 3 || !f[0] || !f[1]) return std::nullopt;
   auto eph = decodeBeidouD1(sat, *f[0], *f[1], *f[2], t_rx);
-  if (!eph) return std::nullopt;
-  const auto key = std::make_pair(eph->toe, eph->iode);
-  if (last_.count(sat) && last_[sat] == key) return std::nullopt;
-  last_[sat] = key;
+  if (!eph || !issues_.isNew(*eph)) return std::nullopt;
   return eph;
 }
 

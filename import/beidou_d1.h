@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/gnss/ephemeris.h"
+#include "import/beidou_nav.h"
 #include "import/bit_buffer.h"
 
 namespace giocal::import {
@@ -23,7 +24,7 @@ class BeidouD1Assembler {
 
  private:
   std::map<SatId, std::array<std::optional<BitBuffer>, 3>> frames_;
-  std::map<SatId, std::pair<double, double>> last_;  // toe, AODE of the last ephemeris given
+  BeidouIssues issues_;
 };
 
 /// The ephemeris of subframes 1-3 (300-bit strings, parity bits in place) of one frame: their

@@ -71,9 +71,7 @@ std::optional<Ephemeris> decodeBeidouD2(const SatId& sat, const BeidouD2Pages& p
 std::optional<Ephemeris> BeidouD2Assembler::add(const SatId& sat,
                                                 const std::vector<uint32_t>& words, double t_rx) {
   const BitBuffer sf = beidouSubframe(sat, words);
-  const int id = beidouSubframeId(sf);
-  if (id < 1 || id > 5)
-    throw std::runtime_error(sat.str() + " D2 subframe id " + std::to_string(id));
+  const int id = beidouSubframeId(sat, sf, "D2");
   if (id != 1) return std::nullopt;  // integrity, differential corrections, almanac: not read
   const int page = pageNumber(sf);
   if (page < 1 || page > 10)
@@ -87,10 +85,7 @@ std::optional<Ephemeris> BeidouD2Assembler::add(const SatId& sat,
   const BeidouD2Pages pages{*held[0], *held[1], *held[2], *held[3], *held[4],
                             *held[5], *held[6], *held[7], *held[8], *held[9]};
   auto eph = decodeBeidouD2(sat, pages, t_rx);
-  if (!eph) return std::nullopt;
-  const auto key = std::make_pair(eph->toe, eph->iode);
-  if (last_.count(sat) && last_[sat] == key) return std::nullopt;
-  last_[sat] = key;
+  if (!eph || !issues_.isNew(*eph)) return std::nullopt;
   return eph;
 }
 

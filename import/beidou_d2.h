@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/gnss/ephemeris.h"
+#include "import/beidou_nav.h"
 #include "import/bit_buffer.h"
 
 namespace giocal::import {
@@ -26,7 +27,7 @@ class BeidouD2Assembler {
 
  private:
   std::map<SatId, std::array<std::optional<BitBuffer>, 10>> pages_;
-  std::map<SatId, std::pair<double, double>> last_;  // toe, AODE of the last ephemeris given
+  BeidouIssues issues_;
 };
 
 /// The ephemeris of pages 1-10 of subframe 1: their seconds of week 3 s apart (one frame each),

@@ -29,7 +29,21 @@ BitBuffer beidouSubframe(const SatId& sat, const std::vector<uint32_t>& words) {
   return sf;
 }
 
-int beidouSubframeId(const BitBuffer& sf) { return static_cast<int>(sf.u(15, 3)); }
+int beidouSubframeId(const SatId& sat, const BitBuffer& sf, const char* format) {
+  const int id = static_cast<int>(sf.u(15, 3));
+  if (id < 1 || id > 5) {
+    throw std::runtime_error(sat.str() + " " + format + " subframe id " + std::to_string(id));
+  }
+  return id;
+}
+
+bool BeidouIssues::isNew(const Ephemeris& e) {
+  const auto key = std::make_pair(e.toe, static_cast<double>(e.iode));
+  const auto it = last_.find(e.sat);
+  if (it != last_.end() && it->second == key) return false;
+  last_[e.sat] = key;
+  return true;
+}
 
 // 8 MSBs in word 1, 12 LSBs in word 2.
 uint32_t beidouSecondsOfWeek(const BitBuffer& sf) { return sf.u2(18, 8, 30, 12); }

@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <vector>
 
+#include "common/gnss/ephemeris.h"
 #include "common/gnss/satellite.h"
 #include "import/bit_buffer.h"
 
@@ -17,8 +20,18 @@ constexpr double kBeidouPi = 3.1415926535898;
 /// place); throws std::runtime_error naming `sat` for another word count or without the preamble.
 BitBuffer beidouSubframe(const SatId& sat, const std::vector<uint32_t>& words);
 
-/// The subframe id (FraID, 1-5).
-int beidouSubframeId(const BitBuffer& sf);
+/// The subframe id (FraID); throws std::runtime_error naming `sat` and `format` ("D1", "D2")
+/// outside 1-5.
+int beidouSubframeId(const SatId& sat, const BitBuffer& sf, const char* format);
+
+/// Passes each issue of a satellite's ephemeris (toe, AODE) once: the message repeats it.
+class BeidouIssues {
+ public:
+  bool isNew(const Ephemeris& e);
+
+ private:
+  std::map<SatId, std::pair<double, double>> last_;
+};
 
 /// The subframe's seconds of BDT week.
 uint32_t beidouSecondsOfWeek(const BitBuffer& sf);
