@@ -132,6 +132,7 @@ void FactorGraphCore::start(const InitialState& init) {
   if (o_.estimate_gyro_tilt)
     with_prior(state::kGyroTilt, o_.gyro_tilt_start, o_.gyro_tilt_sigma_deg * kDegToRad);
   feedMotion(e.t, init.x.b_g);
+  nhc_samples_ = 0;  // samples before the start are not the first epoch's
   e.still = motion_.isStatic();
   next_output_ = e.t;
   epochs_.push_back(e);
