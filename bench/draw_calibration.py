@@ -51,6 +51,8 @@ def main():
     with open(os.path.join(out, "calibration.csv"), "w") as f:
         f.write(",".join(header) + "\n" + ",".join(repr(x) for x in row) + "\n")
     tilt = os.path.join(run, "gyro_tilt.csv")
+    if os.path.exists(os.path.join(out, "gyro_tilt.csv")):
+        os.remove(os.path.join(out, "gyro_tilt.csv"))  # an earlier draw's
     if os.path.exists(tilt) and "gyro_tilt_deg" in tr:
         th, tt = row_at(tilt, r[0])
         g = [tt[0]] + [m + rng.gauss(0.0, s) for m, s in zip(tr["gyro_tilt_deg"], tt[3:5])] + tt[3:5]
