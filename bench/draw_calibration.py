@@ -38,6 +38,8 @@ def row_at(path, t):
 
 
 def main():
+    if len(sys.argv) != 6:
+        sys.exit("usage: draw_calibration.py <run dir> <dataset dir> <seconds|end> <out dir> <seed>")
     run, data, when, out, seed = sys.argv[1:6]
     rng = random.Random(int(seed))
     t0 = json.load(open(os.path.join(run, "summary.json")))["t_first_rover_epoch"]
