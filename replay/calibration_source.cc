@@ -63,11 +63,8 @@ CalibrationSource fromSummary(const std::string& path) {
   return s;
 }
 
-// The last row of `path` at or before time t, or none when the file does not exist or has none.
-std::optional<std::vector<double>> rowAt(const std::string& path,
-                                         const std::vector<std::string>& header, double t) {
-  if (!std::filesystem::exists(path)) return std::nullopt;
-  const CsvTable table = readCsvTable(path, header, {});
+// The table's last row at or before time t (column 0), or none.
+std::optional<std::vector<double>> lastRowAtOrBefore(const CsvTable& table, double t) {
   std::optional<std::vector<double>> row;
   for (const auto& r : table.rows) {
     if (r[0] <= t + 1e-9) row = r;
@@ -75,12 +72,16 @@ std::optional<std::vector<double>> rowAt(const std::string& path,
   return row;
 }
 
+// The same of the file `path`, or none when the file does not exist.
+std::optional<std::vector<double>> rowAt(const std::string& path,
+                                         const std::vector<std::string>& header, double t) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return lastRowAtOrBefore(readCsvTable(path, header, {}), t);
+}
+
 CalibrationSource fromCsvAt(const std::string& path, double seconds, double t0) {
-  const CsvTable table = readCsvTable(path, calibrationCsvHeader(), {});
-  const std::vector<double>* row = nullptr;
-  for (const auto& r : table.rows) {
-    if (r[0] <= t0 + seconds + 1e-9) row = &r;
-  }
+  const std::optional<std::vector<double>> row =
+      lastRowAtOrBefore(readCsvTable(path, calibrationCsvHeader(), {}), t0 + seconds);
   if (!row) {
     throw DataError(
         path, 0,

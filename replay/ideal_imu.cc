@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "common/geodesy/wgs84.h"
+#include "common/imu/error_free_imu.h"
 #include "common/math/rotation.h"
 #include "common/math/so3.h"
 
@@ -15,7 +16,6 @@ std::vector<ImuSample> idealImuAlong(const ReferenceTrajectory& reference,
   if (!first || recorded.size() < 3) return out;
   const LocalFrame frame(
       ecefFromGeodetic({first->lat_deg * kDegToRad, first->lon_deg * kDegToRad, first->h}));
-  const Eigen::Vector3d w_ie_n = frame.omega_ie_n();
   for (std::size_t k = 1; k + 1 < recorded.size(); ++k) {
     const double t = recorded[k].t;
     const double h = 0.25 * (recorded[k + 1].t - recorded[k - 1].t);
@@ -24,13 +24,11 @@ std::vector<ImuSample> idealImuAlong(const ReferenceTrajectory& reference,
     if (!a || !b || !c || !(h > 0.0)) continue;
     const NavState xa = navStateFromRow(frame, *a), xb = navStateFromRow(frame, *b),
                    x = navStateFromRow(frame, *c);
-    const Eigen::Matrix3d R_b_n = x.q_n_b.toRotationMatrix().transpose();
-    // n is fixed to the Earth: the gyro also sees the Earth's rotation, and the accelerometer
-    // the Coriolis acceleration and gravity.
-    out[k].gyro =
-        logSO3((xa.q_n_b.conjugate() * xb.q_n_b).toRotationMatrix()) / (2.0 * h) + R_b_n * w_ie_n;
-    const Eigen::Vector3d a_n = (xb.v_n_b - xa.v_n_b) / (2.0 * h);
-    out[k].acc = R_b_n * (a_n + 2.0 * w_ie_n.cross(x.v_n_b) - frame.gravity_n(x.p_n_b));
+    const Eigen::Vector3d w_nb_b =
+        logSO3((xa.q_n_b.conjugate() * xb.q_n_b).toRotationMatrix()) / (2.0 * h);
+    const ImuSample ideal = errorFreeImu(frame, x, (xb.v_n_b - xa.v_n_b) / (2.0 * h), w_nb_b);
+    out[k].gyro = ideal.gyro;
+    out[k].acc = ideal.acc;
   }
   return out;
 }

@@ -1,6 +1,6 @@
-// idealImuAlong(): the samples an error-free IMU would give along a reference trajectory, at the
-// times of the recorded ones (the observability advisor's covariance recursion, linearized at the
-// motion itself rather than at the IMU's noise).
+// idealImuAlong(): the samples an error-free IMU (errorFreeImu) would give along a reference
+// trajectory, at the times of the recorded ones (the observability advisor's covariance recursion,
+// linearized at the motion itself rather than at the IMU's noise).
 #pragma once
 
 #include <vector>

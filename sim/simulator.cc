@@ -8,6 +8,7 @@
 
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs_writer.h"
+#include "common/imu/error_free_imu.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
 #include "sim/sensor_errors.h"
@@ -80,7 +81,6 @@ SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& 
   const Eigen::Matrix3d R_b_m = truth.q_b_m.toRotationMatrix();
   const Eigen::Matrix3d R_m_b = R_b_m.transpose();
   const Eigen::Vector3d p_m_b = -R_m_b * truth.p_b_m;
-  const Eigen::Vector3d w_ie_n = frame.omega_ie_n();
 
   const double dt_imu = 1.0 / config.imu.rate_hz;
   const long n_imu = static_cast<long>(std::floor(traj.duration() * config.imu.rate_hz + 1e-9));
@@ -90,14 +90,10 @@ SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& 
     Eigen::Vector3d a_n_b;
     NavState s = imuState(m, R_m_b, p_m_b, &a_n_b);
     s.t = t0 + tau;
-    const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
-    // Earth-fixed n: a = R f + g - 2 w_ie x v, with g the normal gravity at the position.
-    const Eigen::Vector3d f_b =
-        R_n_b.transpose() * (a_n_b - frame.gravity_n(s.p_n_b) + 2.0 * w_ie_n.cross(s.v_n_b));
-    const Eigen::Vector3d w_ib_b = R_b_m * m.w_m + R_n_b.transpose() * w_ie_n;
+    const ImuSample ideal = errorFreeImu(frame, s, a_n_b, R_b_m * m.w_m);
     s.b_g = imu_errors.gyroBias();
     s.b_a = imu_errors.accelBias();
-    out.imu.push_back(imu_errors.measure(s.t, w_ib_b, f_b, dt_imu, rng_imu));
+    out.imu.push_back(imu_errors.measure(s.t, ideal.gyro, ideal.acc, dt_imu, rng_imu));
     s.q_n_b = (s.q_n_b * q_b_a).normalized();
     out.truth_n.push_back(s);
     out.truth.push_back(truthRow(frame, s));
