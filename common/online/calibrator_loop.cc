@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/calibration/rejection_share.h"
 #include "common/calibration/weak_directions.h"
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/sky_view.h"
@@ -322,6 +323,7 @@ void Calibrator::finish() {
          weakDirections(*run_.latest, original_.initial_calibration, convergence_.held()))
       run_.warn(w);
   }
+  for (const std::string& w : rejectionShareWarnings(run_, positionsOnly())) run_.warn(w);
   warnAboutUnusedGnss();
   if (!dataset_.odom_noise.measures_yaw_rate) {
     const CalibrationPrior& p = original_.initial_calibration;

@@ -1,0 +1,32 @@
+#include "common/calibration/rejection_share.h"
+
+#include "common/io/text.h"
+
+namespace giocal {
+
+std::vector<std::string> rejectionShareWarnings(const CalibrationRun& run, bool positions_only,
+                                                double fraction) {
+  std::vector<std::string> out;
+  const auto share = [&](long rejected, long total, const std::string& what) {
+    if (total <= 0 || static_cast<double>(rejected) <= fraction * static_cast<double>(total))
+      return;
+    out.push_back(std::to_string(rejected) + " of " + std::to_string(total) + " " + what +
+                  " were rejected by the innovation gates (more than " +
+                  fixedText(100.0 * fraction, 0) +
+                  " %): the estimate no longer fits the data and is likely wrong (diverged, or a "
+                  "wrong dataset.yaml: noise, time offsets, initial guess); check the trajectory "
+                  "against the GNSS solution before using the calibration");
+  };
+  // odometer_intervals counts every interval, odometer_rejected those of them gated out;
+  // dd_rows counts the DD rows used and gnss_rows_rejected the others, or with positions a
+  // rejected fix as three rows and gnss_epochs the fixes used.
+  share(run.counter(Counter::kOdometerRejected), run.counter(Counter::kOdometerIntervals),
+        "odometer intervals");
+  const long used = positions_only ? 3L * run.gnss_epochs : run.counter(Counter::kDdRows);
+  const long rejected = run.counter(Counter::kGnssRowsRejected);
+  share(rejected, used + rejected,
+        positions_only ? "GNSS position rows" : "double-difference GNSS rows");
+  return out;
+}
+
+}  // namespace giocal
