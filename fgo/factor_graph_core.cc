@@ -310,6 +310,12 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     }
   } else {
     gnssFactors(e, rover, base);
+    if (e.diverged) {
+      run_ = nullptr;
+      EpochOutcome out;
+      out.diverged = true;  // the Calibrator drops this core and re-initializes
+      return out;
+    }
   }
   epochs_.push_back(e);
   FgoEpoch& cur = epochs_.back();

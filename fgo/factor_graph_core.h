@@ -32,6 +32,7 @@ struct FgoEpoch {
   double t = 0.0;
   int k = 0;
   bool still = false;
+  bool diverged = false;  // its code rows as a whole far outside their noise (as the EKF's test)
   StateKey p, q, v, ba, bg, sv, sw, cd;  // the quantities at epoch k
   DdEpoch dd;
   std::vector<DdObservation> code_rows, phase_rows;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/calibration/reinitialization_prior.h"
 #include "common/calibration/rejection_share.h"
 #include "common/calibration/weak_directions.h"
 #include "common/geodesy/wgs84.h"
@@ -22,16 +23,6 @@ namespace {
 constexpr double kDelayToTell = 0.01;
 constexpr double kDelaySigmaToTell = 0.01;
 constexpr double kDelayFirstOrder = 0.1;  // [s] the delay state's first-order model
-
-/// The dataset with its calibration prior replaced by an estimate (for a re-initialization).
-DatasetDescription withPrior(DatasetDescription d, const CalibrationEstimate& e) {
-  CalibrationPrior& p = d.initial_calibration;
-  p.mean = e.calib;
-  // Keep the prior's sigma where the estimate claims more (a diverged filter is not trusted).
-  p.sd_s_v = std::max(p.sd_s_v, std::sqrt(e.cov(calib_index::kSv, calib_index::kSv)));
-  p.sd_s_w = std::max(p.sd_s_w, std::sqrt(e.cov(calib_index::kSw, calib_index::kSw)));
-  return d;
-}
 
 /// Drops the samples before t but the last one before it (interpolation needs it), once they are
 /// at least half the buffer (amortized constant cost per sample).
@@ -179,11 +170,11 @@ void Calibrator::dispatchRover(const ObsEpoch& rover) {
   const EpochOutcome out = core_->gnss(rover, *base, run_);
   latency_.add(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   if (out.diverged) {
-    run_.warn("the filter diverged at t=" + timeText(rover.t) +
+    run_.warn("the estimator diverged at t=" + timeText(rover.t) +
               " (GNSS code far outside its predicted spread); re-initializing");
     run_.count(Counter::kReinitializations);
     say(rover.t, "diverged; re-initializing from the data that follow");
-    dataset_ = withPrior(original_, core_->calibration());
+    dataset_ = reinitializationPrior(original_, core_->calibration());
     core_.reset();
     diverged_ = true;
     t_from_ = rover.t;
@@ -307,7 +298,7 @@ void Calibrator::finish() {
                               : why_not_initialized_;
   if (!core_ && run_.latest) {
     run_.warn("no re-initialization possible after t=" + timeText(t_from_) + ": " + why);
-    run_.status = "partial: " + std::string(diverged_ ? "the filter diverged" : "an IMU gap") +
+    run_.status = "partial: " + std::string(diverged_ ? "the estimator diverged" : "an IMU gap") +
                   " before t=" + timeText(t_from_) +
                   " and the data after it allow no new initial state (" + why +
                   "); the calibration is the last one before it";
