@@ -89,7 +89,7 @@ void FactorGraphCore::gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsE
     const Eigen::VectorXd sd = code.covariance().diagonal().cwiseSqrt();
     // Divergence, as the EKF's test: the code rows as a whole far outside their spread. The
     // prediction's own uncertainty is left out, so this fires only where the gate below would
-    // have rejected every row anyway, and only after a short interval: across an outage the
+    // reject most rows anyway, and only after a short interval: across an outage the
     // prediction is the IMU's alone, metres off (the EKF's covariance knows that).
     const Eigen::VectorXd z = r.cwiseAbs().cwiseQuotient(sd);
     if (z.size() >= 4 && e.t - epochs_.back().t <= o_.gnss_gap_warning_s &&
