@@ -5,6 +5,7 @@
 #include <map>
 #include <numeric>
 
+#include "common/calibration/code_divergence.h"
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
 #include "common/gnss/spp.h"
@@ -141,7 +142,7 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     for (size_t k = 0; k < rows.size(); ++k) {
       if (!rows[k].phase) code_z.push_back(z[static_cast<long>(k)]);
     }
-    if (code_z.size() >= 4 && median(code_z) > options_.divergence_sigma) {
+    if (codeRowsDiverged(code_z, options_.divergence_sigma)) {
       rep.diverged = true;
       return rep;
     }

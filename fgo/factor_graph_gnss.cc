@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/calibration/code_divergence.h"
 #include "common/gnss/lambda.h"
 #include "common/imu/gyro_mean.h"
 #include "common/math/median.h"
@@ -92,8 +93,8 @@ void FactorGraphCore::gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsE
     // reject most rows anyway, and only after a short interval: across an outage the
     // prediction is the IMU's alone, metres off (the EKF's covariance knows that).
     const Eigen::VectorXd z = r.cwiseAbs().cwiseQuotient(sd);
-    if (z.size() >= 4 && e.t - epochs_.back().t <= o_.gnss_gap_warning_s &&
-        median(std::vector<double>(z.data(), z.data() + z.size())) > o_.divergence_sigma) {
+    if (e.t - epochs_.back().t <= o_.gnss_gap_warning_s &&
+        codeRowsDiverged(std::vector<double>(z.data(), z.data() + z.size()), o_.divergence_sigma)) {
       e.diverged = true;
       return;
     }
