@@ -36,12 +36,6 @@ std::array<int, 8> calibrationIndices(const StateRegistry& s) {
   return idx;
 }
 
-MotionDetectorOptions detectorOptions(const CalibrationOptions& o, const ImuNoise& noise) {
-  MotionDetectorOptions m = o.models.motion;
-  m.gyro_noise_density = noise.gyro_noise_density;
-  return m;
-}
-
 }  // namespace
 
 CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
@@ -51,7 +45,8 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
       dataset_(dataset),
       imu_(imu),
       frame_(init.origin_e),
-      motion_(detectorOptions(options, dataset.imu_noise)),
+      motion_(withImuNoise(options.models.motion, dataset.imu_noise.gyro_noise_density,
+                           dataset.imu_noise.accel_noise_density)),
       t_(init.x.t),
       motion_fed_t_(init.x.t) {
   // Navigation first, in the order of the IMU residual (p, theta, v, b_a, b_g), then calibration.
@@ -204,7 +199,7 @@ void CalibrationFilter::feedMotion(double t) {
   const Eigen::Vector3d b_g = s_.value(state::kBg);
   auto it = std::upper_bound(imu_.begin(), imu_.end(), motion_fed_t_,
                              [](double v, const ImuSample& s) { return v < s.t; });
-  for (; it != imu_.end() && it->t <= t; ++it) motion_.addImu(it->t, it->gyro - b_g);
+  for (; it != imu_.end() && it->t <= t; ++it) motion_.addImu(it->t, it->gyro - b_g, it->acc);
   motion_fed_t_ = std::max(motion_fed_t_, t);
 }
 

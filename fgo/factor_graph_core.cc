@@ -41,11 +41,8 @@ FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const Broadca
       builder_(orbits_, sensors.base_e, o.dd),
       rover_check_(o.code_outliers),
       base_check_(o.code_outliers),
-      motion_([&] {
-        MotionDetectorOptions m = o.models.motion;
-        m.gyro_noise_density = sensors.description.imu_noise.gyro_noise_density;
-        return m;
-      }()),
+      motion_(withImuNoise(o.models.motion, sensors.description.imu_noise.gyro_noise_density,
+                           sensors.description.imu_noise.accel_noise_density)),
       held_(heldStates(o, sensors.description)) {
   w_.setSolver(fo.solver);
   w_.setStepTolerance(fo.stop_step_sigma);
@@ -65,7 +62,8 @@ void FactorGraphCore::feedMotion(double t, const Eigen::Vector3d& b_g) {
   };
   auto imu = after(in_.imu);
   const auto feedImuTo = [&](double until) {
-    for (; imu != in_.imu.end() && imu->t <= until; ++imu) motion_.addImu(imu->t, imu->gyro - b_g);
+    for (; imu != in_.imu.end() && imu->t <= until; ++imu)
+      motion_.addImu(imu->t, imu->gyro - b_g, imu->acc);
   };
   for (auto it = after(in_.odom); it != in_.odom.end() && it->t <= t; ++it) {
     feedImuTo(it->t);

@@ -17,6 +17,8 @@ ModelOptions readModelOptions(const YamlFields& y) {
   o.motion.zupt_max_gyro =
       y.numberOr(s + "zupt_max_gyro_deg_s", o.motion.zupt_max_gyro * kRadToDeg, 0.0, 100.0) *
       kDegToRad;
+  o.motion.zupt_max_accel_change =
+      y.numberOr(s + "zupt_max_accel_change", o.motion.zupt_max_accel_change, 0.0, 100.0);
   o.motion.zupt_max_speed = y.numberOr(s + "zupt_max_speed", o.motion.zupt_max_speed, 0.0, 10.0);
   o.motion.nhc_max_gyro =
       y.numberOr(s + "nhc_max_gyro_deg_s", o.motion.nhc_max_gyro * kRadToDeg, 0.0, 1000.0) *

@@ -26,8 +26,11 @@ bool MotionDetector::Window<T>::full(double length) const {
   return samples.size() >= 2 && samples.back().first - samples.front().first >= 0.9 * length;
 }
 
-void MotionDetector::addImu(double t, const Eigen::Vector3d& gyro) {
+void MotionDetector::addImu(double t, const Eigen::Vector3d& gyro,
+                            const Eigen::Vector3d& specific_force) {
   gyro_.add(t, gyro, options_.window_s);
+  force_.add(t, specific_force, options_.window_s);
+  recent_force_.add(t, specific_force, recentLength());
 }
 
 void MotionDetector::addOdometer(double t, double forward_speed) {
@@ -42,10 +45,20 @@ double MotionDetector::staticGyroThreshold() const {
                   4.0 * options_.gyro_noise_density / std::sqrt(options_.window_s));
 }
 
+bool MotionDetector::accelSteady() const {
+  // The recent mean is a subset of the window's: their difference has variance
+  // density^2 (1/recent - 1/window) per axis.
+  const double sd = options_.accel_noise_density *
+                    std::sqrt(std::max(0.0, 1.0 / recentLength() - 1.0 / options_.window_s));
+  const double threshold = std::max(options_.zupt_max_accel_change, 5.0 * sd);
+  return (recent_force_.mean() - force_.mean()).norm() < threshold;
+}
+
 bool MotionDetector::isStatic() const {
   const bool wheels_still =
       speed_.samples.empty() || std::abs(speed_.mean()) < options_.zupt_max_speed;
-  return gyro_.full(options_.window_s) && meanGyroNorm() < staticGyroThreshold() && wheels_still;
+  return gyro_.full(options_.window_s) && meanGyroNorm() < staticGyroThreshold() && accelSteady() &&
+         wheels_still;
 }
 
 bool MotionDetector::nhcApplies() const {

@@ -49,7 +49,10 @@ void expectFinal(const CalibrationRun& run, const Expected& x) {
 
 // The values the batch calibrators (runEkfCalibration / runFgoCalibration, commit 5cedcbe, which
 // loaded the whole dataset) wrote to summary.json for the paper preset, seed 1. The streamed
-// replay, reading the files sample by sample, must reproduce them.
+// replay, reading the files sample by sample, must reproduce them. Moved on purpose once since:
+// a ZUPT now needs a steady accelerometer (2026-11-26), which leaves out the ZUPTs of the first
+// half second of the drive (EKF yaw 8.554 -> 7.969 deg, 0.25 sigma; factor graph 8.181 -> 7.843);
+// with `models.zupt_max_accel_change: 100` the old values come back.
 TEST(OnlineCalibrator, StreamedReplayEqualsTheBatchCalibrators) {
   test::TempDir dir;
   const std::string data = simulatePaper(dir, 1);
@@ -57,17 +60,17 @@ TEST(OnlineCalibrator, StreamedReplayEqualsTheBatchCalibrators) {
   job.estimator = "ekf";
   expectFinal(
       replayFolder(data, job, nullptr),
-      {0.017749672967718316, -0.028736445192570122, 0.3498019330700938, -0.16223609946654485,
-       1.2899316159583751, -2.1286605429530794, 8.553544407482496, 2.3467373014441733, 133});
+      {0.017784116752433212, -0.028742102086214787, 0.34766361267203516, -0.16525173849197,
+       1.3134421385375421, -2.1146784372283229, 7.9689953604995978, 2.359345899990565, 133});
   job.estimator = "fgo";
   job.fgo_options.solver = WindowSolver::kCeres;  // the batch calibrator's solver
   // The factor graph's since its scale random-walk floor went from 1e-5 to 1e-6 /sqrt(s) (the
   // batch's with that floor; the change moved these by under 1e-3 of their sigmas), and since
   // the covariances weigh Huber-clipped rows as the solve does (yaw sigma 4.0475129 -> 4.0475141).
   const CalibrationRun ceres = replayFolder(data, job, nullptr);
-  expectFinal(ceres, {0.018490286090652834, -0.028188550459916563, 0.34675510968810774,
-                      -0.16035943935844929, 1.312410198754469, -2.1207144501096704,
-                      8.1813258178187773, 4.0475140849288804, 132});
+  expectFinal(ceres, {0.018549752746531645, -0.028189709748387901, 0.34564574219238892,
+                      -0.1622474693466108, 1.3258870690282851, -2.1124705151815371,
+                      7.8432581344732695, 4.0594733730810635, 132});
 
   // giocal's own Gauss-Newton (the default) solves the same problem: it stops at a slightly
   // different point (its step test is the model's predicted decrease, Ceres' the actual one),
