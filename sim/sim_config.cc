@@ -43,6 +43,7 @@ SimConfig readSimConfig(const std::string& path) {
       spec.angle_deg = s.numberOr("s.angle_deg", 0.0, 0.0, 1e5);
       spec.rate_deg_s = s.numberOr("s.rate_deg_s", 0.0, -360.0, 360.0);
       spec.transition = s.numberOr("s.transition", 1.0, 0.0, 100.0);
+      s.rejectUnknownKeys();
       once.push_back(spec);
     }
     for (int lap = 0; lap < repeat; ++lap)
@@ -82,6 +83,9 @@ SimConfig readSimConfig(const std::string& path) {
       y.numberOr("odometer.scale_drift_per_sqrt_s", o.scale_drift_per_sqrt_s, 0.0, 1.0);
   o.speed_quantum = y.numberOr("odometer.speed_quantum", o.speed_quantum, 0.0, 1.0);
   o.delay_s = y.numberOr("odometer.delay_s", o.delay_s, 0.0, 1.0);
+  o.slip_rate_per_min = y.numberOr("odometer.slip_rate_per_min", o.slip_rate_per_min, 0.0, 600.0);
+  o.slip_duration_s = y.numberOr("odometer.slip_duration_s", o.slip_duration_s, 0.0, 60.0);
+  o.slip_speed_factor = y.numberOr("odometer.slip_speed_factor", o.slip_speed_factor, 0.0, 10.0);
   o.yaw_rate_quantum_deg_s =
       y.numberOr("odometer.yaw_rate_quantum_deg_s", o.yaw_rate_quantum_deg_s, 0.0, 10.0);
 
@@ -148,6 +152,7 @@ SimConfig readSimConfig(const std::string& path) {
         sc.outlier_m = f.numberOr("s.outlier_m", sc.outlier_m, 0.0, 1000.0);
         sc.extra_phase_sigma = f.numberOr("s.extra_phase_sigma", sc.extra_phase_sigma, 0.0, 1.0);
         sc.slip_probability = f.numberOr("s.slip_probability", sc.slip_probability, 0.0, 1.0);
+        f.rejectUnknownKeys();
         g.scenes.push_back(sc);
       }
     }
@@ -157,6 +162,9 @@ SimConfig readSimConfig(const std::string& path) {
   c.guess_sd_s_w = y.numberOr("initial_guess_sigma.s_w", c.guess_sd_s_w, 1e-9, 0.5);
   c.guess_sd_p_b_m = y.numberOr("initial_guess_sigma.p_b_m", c.guess_sd_p_b_m, 1e-9, 10.0);
   c.guess_sd_rpy_deg = y.numberOr("initial_guess_sigma.rpy_deg", c.guess_sd_rpy_deg, 1e-9, 90.0);
+  // A misspelled key would otherwise simulate something else than the file says, silently (the
+  // field preset's wheel-slip lines were ignored until 2026-11-26).
+  y.rejectUnknownKeys();
   return c;
 }
 

@@ -202,6 +202,42 @@ TEST(Simulator, BadConfigIsReportedWithFileAndLine) {
   EXPECT_THROW(sim::parseGpsTime("yesterday"), std::invalid_argument);
 }
 
+// Every key of a preset is read or refused: the field preset's wheel-slip lines were ignored
+// without a word until 2026-11-26. A misspelling, at the top, in a segment or in a scene, names
+// its line and the nearest key.
+TEST(SimConfig, EveryKeyIsReadOrRefusedByName) {
+  test::TempDir dir;
+  std::string paper = slurp(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
+  paper.replace(paper.find("nav_file: ../../data/"), 21,
+                "nav_file: " + std::string(GIOCAL_SOURCE_DIR) + "/data/");
+  std::string slipping = paper;
+  slipping.replace(slipping.find("odometer:\n"), 10,
+                   "odometer:\n  slip_rate_per_min: 3.0\n  slip_duration_s: 0.2\n"
+                   "  slip_speed_factor: 1.4\n");
+  const sim::SimConfig c = sim::readSimConfig(dir.write("slip.yaml", slipping));
+  EXPECT_EQ(c.odometer.slip_rate_per_min, 3.0);
+  EXPECT_EQ(c.odometer.slip_duration_s, 0.2);
+  EXPECT_EQ(c.odometer.slip_speed_factor, 1.4);
+  const std::vector<std::pair<std::string, std::string>> misspelt{
+      {"  rate_hz: 25", "odometer.rate_hz"},
+      {"transition: 2.0", "s.transition"},
+  };
+  for (const auto& [text, nearest] : misspelt) {
+    std::string bad = paper;
+    const size_t at = bad.find(text);
+    ASSERT_NE(at, std::string::npos) << text;
+    bad.insert(at + text.find(':'), "x");
+    try {
+      sim::readSimConfig(dir.write("bad.yaml", bad));
+      ADD_FAILURE() << "accepted a misspelt " << text;
+    } catch (const DataError& e) {
+      EXPECT_GT(e.line(), 0) << e.what();
+      EXPECT_NE(std::string(e.what()).find("did you mean '" + nearest + "'"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace giocal
 
