@@ -117,6 +117,8 @@ DatasetDescription readDatasetDescription(const std::string& folder) {
   c.sd_s_w = y.number("initial_calibration.sigma.s_w", 1e-9, 1.0);
   c.sd_p_b_m = y.vector3("initial_calibration.sigma.p_b_m", 1e-9, kMaxLever);
   c.sd_rpy_b_m = y.vector3("initial_calibration.sigma.rpy_b_m_deg", 1e-9, 180.0) * kDegToRad;
+  // An optional key misspelt (time_offsets.odometr) would otherwise be its default, silently.
+  y.rejectUnknownKeys();
   return d;
 }
 

@@ -80,6 +80,9 @@ TEST(DatasetDescription, MissingKeyAndBadValuesNameTheLine) {
   expectError("just a sentence\n", "the document is a single value; expected a map of keys");
   expectError("", "the document is empty; expected a map of keys");
   expectError(good + "[a, b]: 3\n", "a key under 'the top level' is a list or a map");
+  // An optional key misspelt is refused, not left at its default.
+  expectError(good + "time_offsets:\n  odometr: 0.05\n",
+              "unknown key 'time_offsets.odometr'; did you mean 'time_offsets.odometer'?");
 }
 
 TEST(TruthCalibration, RoundTripAndConsistency) {
