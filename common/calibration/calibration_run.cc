@@ -86,6 +86,12 @@ CalibrationError calibrationError(const CalibrationEstimate& e, const OdometerCa
   return err;
 }
 
+double calibrationStepChi2(const CalibrationEstimate& before, const CalibrationEstimate& after) {
+  CalibrationEstimate moved = after;
+  moved.cov = before.cov;
+  return calibrationError(moved, before.calib).nees7;
+}
+
 std::vector<std::string> calibrationOutputFiles() {
   return {"calibration.csv", "trajectory.csv", "gnss.csv", "summary.json"};
 }

@@ -90,6 +90,10 @@ struct CalibrationError {
 };
 CalibrationError calibrationError(const CalibrationEstimate& estimate,
                                   const OdometerCalibration& truth);
+/// How far the calibration moved from `before` to `after`, as a chi-square in `before`'s
+/// covariance over the seven observable states. In a linear estimator one update's step is
+/// bounded by its innovation's chi-square, so a large one means data that disagree.
+double calibrationStepChi2(const CalibrationEstimate& before, const CalibrationEstimate& after);
 
 /// summary.json of a run (the brief's keys and giocal's, see the README), `truth` when known;
 /// `files` (name -> bytes) are the other files of its output set (io/output_set.h).

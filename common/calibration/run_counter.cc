@@ -42,6 +42,8 @@ const char* counterName(Counter c) {
       return "odometer_gaps";
     case Counter::kGnssGaps:
       return "gnss_gaps";
+    case Counter::kCalibrationJumps:
+      return "calibration_jumps";
     case Counter::kSize:
       break;
   }

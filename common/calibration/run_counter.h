@@ -23,6 +23,7 @@ enum class Counter {
   kDroppedWithoutImu,    // odometer and GNSS data dropped while the IMU was silent
   kOdometerGaps,         // odometer intervals longer than max_odometer_gap_s
   kGnssGaps,             // rover epochs more than gnss_gap_warning_s after the previous one
+  kCalibrationJumps,     // epochs at which the calibration moved beyond its chi-square gate
   kSize
 };
 

@@ -127,6 +127,7 @@ class Calibrator {
   std::deque<ObsEpoch> rover_;  // rover epochs not yet processed
   std::unique_ptr<EstimatorCore> core_;
   ConvergenceMonitor convergence_;
+  std::optional<CalibrationEstimate> core_estimate_;  // the present core's previous estimate
   OdometerDelayEstimator odometer_delay_;  // checks the odometer's stamps against the IMU's
   bool diverged_ = false, finishing_ = false, done_said_ = false;
   double t_first_ = NAN, frontier_ = -INFINITY;

@@ -11,6 +11,7 @@
 #include "common/calibration/weak_directions.h"
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/sky_view.h"
+#include "common/gnss/spp.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "common/online/busy_timer.h"
@@ -98,6 +99,7 @@ bool Calibrator::tryInitialize() {
   }
   epochs.clear();  // the estimator takes rover epochs from the stream, not from here
   core_ = factory_(buf_, *orbits_, *init);
+  core_estimate_.reset();
   origin_e_ = init->origin_e;
   init_cache_ = {};
   why_not_initialized_.clear();
@@ -206,6 +208,19 @@ void Calibrator::dispatchRover(const ObsEpoch& rover) {
 
 void Calibrator::onEstimate(const CalibrationEstimate& e) {
   run_.latest = e;
+  if (core_estimate_) {
+    const double step = calibrationStepChi2(*core_estimate_, e);
+    if (step > chi2Quantile(options_.chi2_probability, 7)) {
+      noted(Counter::kCalibrationJumps,
+            "the calibration moved further in one epoch than one epoch's data can move it "
+            "(chi-square " +
+                fixedText(step, 0) + " in its sigmas before, at t=" + timeText(e.t) +
+                "): the data before or after disagree with the model (wheel slip, a wrong fix, "
+                "wrong noise, lever arm or time offsets in dataset.yaml), and the estimate may "
+                "have left the truth");
+    }
+  }
+  core_estimate_ = e;
   toSink([&](RunSink& sink) { sink.estimate(e); });
   for (const ConvergenceEvent& c : convergence_.update(e)) {
     const std::string name = calibrationStateName(c.state);
