@@ -278,8 +278,9 @@ int runObservabilityCommand(int argc, char** argv) {
       "pos", po::value<std::string>()->default_value(""),
       "an RTK solution of the drive, for a dataset without truth.csv")(
       "window", po::value<double>()->default_value(30.0), "analysis window [s]")(
-      "position-sigma", po::value<double>()->default_value(0.01),
-      "sigma of the antenna positions made from truth.csv [m]")(
+      "position-sigma", po::value<double>()->default_value(0.0),
+      "sigma per axis of the antenna positions made from truth.csv [m]; 0: each epoch's from "
+      "its fixed DD carrier phase (satellites, mask and noise of the configuration)")(
       "config", po::value<std::string>()->default_value(""), "YAML configuration")(
       "out", po::value<std::string>()->default_value(""), "folder for observability.json")(
       "overwrite", "replace observability.json in --out");

@@ -15,6 +15,7 @@
 #include "common/io/output_set.h"
 #include "common/io/sensor_logs.h"
 #include "common/io/text.h"
+#include "common/math/median.h"
 #include "replay/config.h"
 #include "replay/observability.h"
 
@@ -47,8 +48,8 @@ nlohmann::ordered_json sigmaJson(const Eigen::Matrix<double, 8, 1>& s) {
 }  // namespace
 
 void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
-  if (!(job.position_sigma_m > 0.0) || !(job.window_s > 0.0)) {
-    throw std::runtime_error("--position-sigma and --window must be positive");
+  if (!(job.position_sigma_m >= 0.0) || !(job.window_s > 0.0)) {
+    throw std::runtime_error("--position-sigma must be 0 or more and --window positive");
   }
   const std::string json = job.out.empty() ? "" : job.out + "/observability.json";
   if (!json.empty() && std::filesystem::exists(json) && !job.overwrite) {
@@ -75,7 +76,6 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   ObservabilityJob oj;
   oj.options = config.calibration;
   oj.window_s = job.window_s;
-  oj.position_sigma_m = job.position_sigma_m;
   const std::string calibration =
       !job.calibration.empty() ? job.calibration : (in.truth ? "truth" : "guess");
   if (calibration == "truth") {
@@ -91,13 +91,34 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
                           " (linearized at the filter's own estimate)";
   if (positions.empty()) {
     oj.reference = ReferenceTrajectory(readTruthCsv(in.description.pathOf(in.description.truth)));
-    std::vector<double> times;
-    for (const ObsEpoch& e : in.rover.epochs) times.push_back(e.t);
-    in.positions =
-        antennaPositionsAlong(*oj.reference, in.truth ? in.truth->p_b_g : in.description.p_b_g,
-                              times, job.position_sigma_m);
-    reference =
-        "truth.csv, antenna positions with " + fixedText(job.position_sigma_m, 3) + " m sigma";
+    const Eigen::Vector3d p_b_g = in.truth ? in.truth->p_b_g : in.description.p_b_g;
+    if (job.position_sigma_m > 0.0) {
+      std::vector<double> times;
+      for (const ObsEpoch& e : in.rover.epochs) times.push_back(e.t);
+      in.positions = antennaPositionsAlong(*oj.reference, p_b_g, times, job.position_sigma_m);
+      reference =
+          "truth.csv, antenna positions with " + fixedText(job.position_sigma_m, 3) + " m sigma";
+    } else {
+      // What a fixed epoch's DD phase tells of the antenna, with the satellites it saw.
+      in.positions = antennaPositionsFromPhase(*oj.reference, p_b_g, in, oj.options);
+      if (in.positions.empty()) {
+        throw std::runtime_error(job.data +
+                                 ": no rover epoch with a base epoch and four satellites "
+                                 "to fix: give --position-sigma");
+      }
+      std::vector<double> east, north, up;
+      for (const PositionFix& f : in.positions) {
+        east.push_back(std::sqrt(f.cov_enu(0, 0)));
+        north.push_back(std::sqrt(f.cov_enu(1, 1)));
+        up.push_back(std::sqrt(f.cov_enu(2, 2)));
+      }
+      reference =
+          "truth.csv, antenna positions with the sigma of each epoch's fixed DD phase "
+          "(median E/N/U " +
+          fixedText(1e3 * median(east), 1) + "/" + fixedText(1e3 * median(north), 1) + "/" +
+          fixedText(1e3 * median(up), 1) + " mm, " + std::to_string(in.positions.size()) +
+          " epochs)";
+    }
   }
   const ObservabilityReport r = analyzeObservability(in, oj);
 

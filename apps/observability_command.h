@@ -9,7 +9,8 @@ namespace giocal {
 
 struct ObservabilityCommandJob {
   std::string data, calibration, positions, config, out;  // calibration empty: truth, else guess
-  double window_s = 30.0, position_sigma_m = 0.01;
+  double window_s = 30.0;
+  double position_sigma_m = 0.0;  // > 0: this sigma per axis instead of the DD phase's geometry
   bool overwrite = false;
 };
 

@@ -6,6 +6,7 @@
 #include "common/calibration/calibration_run.h"
 #include "common/calibration/initial_state.h"
 #include "common/calibration/weak_directions.h"
+#include "common/gnss/fixed_phase_covariance.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "common/models/state_block.h"
@@ -175,18 +176,62 @@ std::vector<std::string> adviceFor(const ObservabilityReport& r) {
 
 }  // namespace
 
+namespace {
+
+/// The antenna on the reference at t (ECEF), with the rotation from ENU there to ECEF.
+std::optional<std::pair<Eigen::Vector3d, Eigen::Matrix3d>> antennaAt(
+    const ReferenceTrajectory& reference, const Eigen::Vector3d& p_b_g, double t) {
+  const std::optional<TruthSample> s = reference.at(t);
+  if (!s) return std::nullopt;
+  const double lat = s->lat_deg * kDegToRad, lon = s->lon_deg * kDegToRad;
+  const Eigen::Matrix3d R_e_n = rotationEcefFromEnu(lat, lon);
+  return std::make_pair(ecefFromGeodetic({lat, lon, s->h}) + R_e_n * (s->q_n_b * p_b_g), R_e_n);
+}
+
+}  // namespace
+
 std::vector<PositionFix> antennaPositionsAlong(const ReferenceTrajectory& reference,
                                                const Eigen::Vector3d& p_b_g,
                                                const std::vector<double>& times, double sigma_m) {
   std::vector<PositionFix> fixes;
   for (double t : times) {
-    const std::optional<TruthSample> s = reference.at(t);
-    if (!s) continue;
-    const double lat = s->lat_deg * kDegToRad, lon = s->lon_deg * kDegToRad;
+    const auto a = antennaAt(reference, p_b_g, t);
+    if (!a) continue;
     PositionFix f;
     f.t = t;
-    f.p_e = ecefFromGeodetic({lat, lon, s->h}) + rotationEcefFromEnu(lat, lon) * (s->q_n_b * p_b_g);
+    f.p_e = a->first;
     f.cov_enu = Eigen::Matrix3d::Identity() * sigma_m * sigma_m;
+    f.quality = 1;
+    fixes.push_back(f);
+  }
+  return fixes;
+}
+
+std::vector<PositionFix> antennaPositionsFromPhase(const ReferenceTrajectory& reference,
+                                                   const Eigen::Vector3d& p_b_g,
+                                                   const CalibrationInputs& in,
+                                                   const CalibrationOptions& options) {
+  const BroadcastOrbits orbits(in.nav);
+  DdEpochBuilder builder(orbits, in.base_e, options.dd);
+  const std::vector<ObsEpoch>& base = in.base.epochs;
+  std::vector<PositionFix> fixes;
+  for (const ObsEpoch& rover : in.rover.epochs) {
+    const auto a = antennaAt(reference, p_b_g, rover.t);
+    const auto b = std::lower_bound(base.begin(), base.end(), rover.t,
+                                    [](const ObsEpoch& e, double t) { return e.t < t; });
+    const ObsEpoch* nearest = nullptr;
+    for (auto it : {b, b == base.begin() ? b : std::prev(b)}) {
+      if (it == base.end() || std::abs(it->t - rover.t) > options.max_base_offset) continue;
+      if (!nearest || std::abs(it->t - rover.t) < std::abs(nearest->t - rover.t)) nearest = &*it;
+    }
+    if (!a || !nearest) continue;
+    const std::optional<Eigen::Matrix3d> cov_e =
+        fixedPhasePositionCovariance(builder.build(rover, *nearest, a->first), a->first);
+    if (!cov_e) continue;
+    PositionFix f;
+    f.t = rover.t;
+    f.p_e = a->first;
+    f.cov_enu = a->second.transpose() * *cov_e * a->second;
     f.quality = 1;
     fixes.push_back(f);
   }

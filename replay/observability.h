@@ -24,7 +24,6 @@ struct ObservabilityJob {
   /// The reference the navigation state is held on at every step (truth.csv); without one the
   /// filter runs on in.positions and its own estimate (the LC scheme's covariance).
   std::optional<ReferenceTrajectory> reference;
-  double position_sigma_m = 0.01;  // of the antenna positions made from the reference [m]
   double window_s = 30.0;
 };
 
@@ -68,5 +67,12 @@ ObservabilityReport analyzeObservability(const CalibrationInputs& in, const Obse
 std::vector<PositionFix> antennaPositionsAlong(const ReferenceTrajectory& reference,
                                                const Eigen::Vector3d& p_b_g,
                                                const std::vector<double>& times, double sigma_m);
+/// The same at each rover epoch with a base epoch, with the covariance that epoch's DD carrier
+/// phase gives with its ambiguities fixed (options.dd: satellites, mask, noise); epochs without
+/// three independent phase rows give none.
+std::vector<PositionFix> antennaPositionsFromPhase(const ReferenceTrajectory& reference,
+                                                   const Eigen::Vector3d& p_b_g,
+                                                   const CalibrationInputs& in,
+                                                   const CalibrationOptions& options);
 
 }  // namespace giocal
