@@ -11,14 +11,11 @@
 #include "common/models/heading_change_model.h"
 #include "common/models/imu_preintegration_model.h"
 #include "common/models/nhc_model.h"
-#include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
 #include "common/models/position_model.h"
 #include "common/models/prior_model.h"
 #include "common/models/random_walk_model.h"
-#include "common/models/standstill_projection.h"
 #include "common/models/zupt_model.h"
-#include "common/odometer/odometer_preintegration.h"
 #include "fgo/factor_tag.h"
 
 namespace giocal {
@@ -241,28 +238,11 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   if (tilted) imu_vars.push_back(state::kGyroTilt);
   w_.addFactor(
       {std::make_shared<ImuPreintegrationModel>(imu, tilted), imu_vars, 0.0, tagged("imu", e.k)});
-  auto odo = std::make_shared<OdometerPreintegration>(
-      odometerPreintegrationNoise(in_.description.odom_noise, o_.models), w_.value(prev.sv)[0],
-      w_.value(prev.sw)[0]);
   // Motion constraints and whether the robot stood still over the interval.
   feedMotion(e.t, x_prev.b_g);
   e.still = motion_.isStatic();
   if (in_.odom.front().t <= prev.t) {
-    odo->integrateSamples(in_.odom, prev.t, e.t);
-    // With the odometer's delay as a state: the IMU's velocity and rate at both ends.
-    std::optional<PoseRates> rates;
-    std::vector<StateKey> vars{prev.p, prev.q, e.p, e.q, prev.sv, prev.sw, kPbm, kQbm};
-    if (o_.estimate_odometer_delay) {
-      const double density = in_.description.imu_noise.gyro_noise_density;
-      rates = PoseRates{x_prev.v_n_b, poseRate(in_.imu, prev.t, x_prev.b_g, density), w_.value(e.v),
-                        poseRate(in_.imu, e.t, x_prev.b_g, density)};
-      vars.push_back(state::kTdOdo);
-    }
-    std::shared_ptr<const MeasurementModel> model =
-        planar(std::make_shared<OdometerPreintegrationModel>(
-            odo, !in_.description.odom_noise.measures_yaw_rate, rates));
-    if (e.still && prev.still) model = std::make_shared<StandstillProjection>(model);
-    w_.addFactor({model, vars, 0.0, tagged("odometer", e.k)});
+    addOdometerFactor(prev, e, odometerSamples(prev.t, e.t));
     run_->count(Counter::kOdometerIntervals);
   }
   // Scales and clock drift as random walks; the floor keeps a zero density well posed (why 1e-6:
@@ -323,6 +303,7 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     fix = nullptr;
     w_.solve(fo_.max_iterations);
   }
+  if (leaveOutSlips(epochs_[epochs_.size() - 2], cur)) w_.solve(fo_.max_iterations);
   if (rejectOdometer(cur)) w_.solve(fo_.max_iterations);
   EpochOutcome out;
   out.used = !o_.loosely_coupled || fix;

@@ -82,6 +82,15 @@ class FactorGraphCore : public EstimatorCore {
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
   bool rejectOdometer(const FgoEpoch& e);
+  // Odometer intervals (fgo/odometer_slip_check.cc).
+  /// The odometer samples over [t0, t1] with the one before t0 and the one after t1.
+  std::vector<OdomSample> odometerSamples(double t0, double t1) const;
+  void addOdometerFactor(const FgoEpoch& prev, const FgoEpoch& e,
+                         const std::vector<OdomSample>& samples);
+  /// After a solve: samples of the interval prev-e whose speed leaves the interval's common
+  /// offset from the IMU (pinned to the solved states at both ends) by more than
+  /// fgo.odometer_slip_sigma are wheel slip; the factor is made again without them.
+  bool leaveOutSlips(const FgoEpoch& prev, const FgoEpoch& e);
   /// The current version of the SD ambiguity of (sat, band); none before its first.
   std::optional<StateKey> ambiguityVar(const SatId& sat, char band) const;
   void newAmbiguity(const SatId& sat, char band, double value, double lambda);

@@ -23,6 +23,7 @@ FgoOptions readFgoOptions(const YamlFields& y) {
   o.code_huber = y.numberOr("fgo.code_huber", o.code_huber, 0.0, 1e6);
   o.rejection_sigma = y.numberOr("fgo.rejection_sigma", o.rejection_sigma, 1.0, 1e6);
   o.max_rejections = static_cast<int>(y.numberOr("fgo.max_rejections", o.max_rejections, 0, 100));
+  o.odometer_slip_sigma = y.numberOr("fgo.odometer_slip_sigma", o.odometer_slip_sigma, 0.0, 1e6);
   return o;
 }
 

@@ -18,6 +18,9 @@ struct FgoOptions {
   double code_huber = 3.0;       // Huber threshold of DD code and Doppler factors [sigma]
   double rejection_sigma = 5.0;  // rows with post-solve residuals beyond this are removed
   int max_rejections = 5;        // per epoch
+  // An odometer sample this many speed sigmas off its interval's common offset from the IMU is
+  // wheel slip and left out (0: no check; fgo/odometer_slip_check.cc).
+  double odometer_slip_sigma = 5.0;
 };
 
 /// Throws DataError naming the file, line and problem; an empty path gives the defaults.

@@ -44,6 +44,8 @@ const char* counterName(Counter c) {
       return "gnss_gaps";
     case Counter::kCalibrationJumps:
       return "calibration_jumps";
+    case Counter::kOdometerSlips:
+      return "odometer_slips";
     case Counter::kSize:
       break;
   }

@@ -24,6 +24,7 @@ enum class Counter {
   kOdometerGaps,         // odometer intervals longer than max_odometer_gap_s
   kGnssGaps,             // rover epochs more than gnss_gap_warning_s after the previous one
   kCalibrationJumps,     // epochs at which the calibration moved beyond its chi-square gate
+  kOdometerSlips,        // odometer samples left out by the factor graph's slip check
   kSize
 };
 
