@@ -64,33 +64,34 @@ bool FactorGraphCore::leaveOutSlips(const FgoEpoch& prev, const FgoEpoch& e) {
   // second a MEMS gyro's attitude walk alone moves the prediction by centimetres per second
   // (paper preset, 3 cm/s), a slip at 0.25 m/s by 7.5 cm/s.
   const NavState x0 = nav(prev), x1 = nav(e);
-  ImuPreintegration pre(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b), frame_.omega_ie_n(),
-                        x0.b_a, x0.b_g, gyroTilt());
-  pre.integrateSamples(in_.imu, prev.t, e.t);
-  const Eigen::Vector3d v_miss = x1.v_n_b - pre.predict(x0).v_n_b;
   ImuPreintegration along(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b),
                           frame_.omega_ie_n(), x0.b_a, x0.b_g, gyroTilt());
+  std::vector<NavState> x;     // the prediction at each sample in (prev.t, e.t]
+  std::vector<size_t> inside;  // those samples' indices
+  double integrated_to = prev.t;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    if (samples[k].t <= prev.t || samples[k].t > e.t) continue;
+    along.integrateSamples(in_.imu, integrated_to, samples[k].t);
+    integrated_to = samples[k].t;
+    x.push_back(along.predict(x0));
+    inside.push_back(k);
+  }
+  if (x.empty()) return false;
+  if (e.t > integrated_to) along.integrateSamples(in_.imu, integrated_to, e.t);
+  const Eigen::Vector3d v_miss = x1.v_n_b - along.predict(x0).v_n_b;
   const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
   const Eigen::Vector3d p_b_m = window.value(kPbm);
   const Eigen::Matrix3d R_m_b =
       quatFromWxyz(window.value(kQbm).data()).toRotationMatrix().transpose();
-  double integrated_to = prev.t;
   std::vector<double> r;
-  std::vector<size_t> inside;  // indices of the samples in (prev.t, e.t]
-  for (size_t k = 0; k < samples.size(); ++k) {
-    const OdomSample& s = samples[k];
-    if (s.t <= prev.t || s.t > e.t) continue;
-    along.integrateSamples(in_.imu, integrated_to, s.t);
-    integrated_to = s.t;
-    const NavState x = along.predict(x0);
-    const Eigen::Vector3d v_n = x.v_n_b + (s.t - prev.t) / (e.t - prev.t) * v_miss;
+  for (size_t j = 0; j < x.size(); ++j) {
+    const OdomSample& s = samples[inside[j]];
+    const Eigen::Vector3d v_n = x[j].v_n_b + (s.t - prev.t) / (e.t - prev.t) * v_miss;
     const Eigen::Vector3d w_b =
         meanGyro(in_.imu, s.t, kRateHalfWindow, in_.description.imu_noise.gyro_noise_density).rate -
-        x.b_g;
-    r.push_back(s.v - (R_m_b * (x.q_n_b.conjugate() * v_n + w_b.cross(p_b_m))).y());
-    inside.push_back(k);
+        x[j].b_g;
+    r.push_back(s.v - (R_m_b * (x[j].q_n_b.conjugate() * v_n + w_b.cross(p_b_m))).y());
   }
-  if (r.empty()) return false;
   // Calibration errors move the interval's samples together; a slip moves some of them.
   const double m = median(r);
   const double gate = fo_.odometer_slip_sigma * in_.description.odom_noise.speed_sigma;
