@@ -10,6 +10,7 @@
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
 #include "common/models/standstill_projection.h"
+#include "common/odometer/vehicle_velocity.h"
 #include "fgo/factor_graph_core.h"
 #include "fgo/factor_tag.h"
 
@@ -81,16 +82,14 @@ bool FactorGraphCore::leaveOutSlips(const FgoEpoch& prev, const FgoEpoch& e) {
   const Eigen::Vector3d v_miss = x1.v_n_b - along.predict(x0).v_n_b;
   const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
   const Eigen::Vector3d p_b_m = window.value(kPbm);
-  const Eigen::Matrix3d R_m_b =
-      quatFromWxyz(window.value(kQbm).data()).toRotationMatrix().transpose();
+  const Eigen::Quaterniond q_b_m = quatFromWxyz(window.value(kQbm).data());
   std::vector<double> r;
   for (size_t j = 0; j < x.size(); ++j) {
     const OdomSample& s = samples[inside[j]];
     const Eigen::Vector3d v_n = x[j].v_n_b + (s.t - prev.t) / (e.t - prev.t) * v_miss;
-    const Eigen::Vector3d w_b =
-        meanGyro(in_.imu, s.t, kRateHalfWindow, in_.description.imu_noise.gyro_noise_density).rate -
-        x[j].b_g;
-    r.push_back(s.v - (R_m_b * (x[j].q_n_b.conjugate() * v_n + w_b.cross(p_b_m))).y());
+    const GyroMean rate =
+        meanGyro(in_.imu, s.t, kRateHalfWindow, in_.description.imu_noise.gyro_noise_density);
+    r.push_back(s.v - vehicleVelocity(v_n, x[j].q_n_b, rate.rate, x[j].b_g, p_b_m, q_b_m).v_m.y());
   }
   // Calibration errors move the interval's samples together; a slip moves some of them.
   const double m = median(r);

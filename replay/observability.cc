@@ -188,6 +188,15 @@ std::optional<std::pair<Eigen::Vector3d, Eigen::Matrix3d>> antennaAt(
   return std::make_pair(ecefFromGeodetic({lat, lon, s->h}) + R_e_n * (s->q_n_b * p_b_g), R_e_n);
 }
 
+PositionFix fixedAntenna(double t, const Eigen::Vector3d& p_e, const Eigen::Matrix3d& cov_enu) {
+  PositionFix f;
+  f.t = t;
+  f.p_e = p_e;
+  f.cov_enu = cov_enu;
+  f.quality = 1;
+  return f;
+}
+
 }  // namespace
 
 std::vector<PositionFix> antennaPositionsAlong(const ReferenceTrajectory& reference,
@@ -196,13 +205,8 @@ std::vector<PositionFix> antennaPositionsAlong(const ReferenceTrajectory& refere
   std::vector<PositionFix> fixes;
   for (double t : times) {
     const auto a = antennaAt(reference, p_b_g, t);
-    if (!a) continue;
-    PositionFix f;
-    f.t = t;
-    f.p_e = a->first;
-    f.cov_enu = Eigen::Matrix3d::Identity() * sigma_m * sigma_m;
-    f.quality = 1;
-    fixes.push_back(f);
+    if (a)
+      fixes.push_back(fixedAntenna(t, a->first, Eigen::Matrix3d::Identity() * sigma_m * sigma_m));
   }
   return fixes;
 }
@@ -213,27 +217,16 @@ std::vector<PositionFix> antennaPositionsFromPhase(const ReferenceTrajectory& re
                                                    const CalibrationOptions& options) {
   const BroadcastOrbits orbits(in.nav);
   DdEpochBuilder builder(orbits, in.base_e, options.dd);
-  const std::vector<ObsEpoch>& base = in.base.epochs;
+  BaseEpochMatcher base(in.base.epochs, options.max_base_offset);
   std::vector<PositionFix> fixes;
   for (const ObsEpoch& rover : in.rover.epochs) {
     const auto a = antennaAt(reference, p_b_g, rover.t);
-    const auto b = std::lower_bound(base.begin(), base.end(), rover.t,
-                                    [](const ObsEpoch& e, double t) { return e.t < t; });
-    const ObsEpoch* nearest = nullptr;
-    for (auto it : {b, b == base.begin() ? b : std::prev(b)}) {
-      if (it == base.end() || std::abs(it->t - rover.t) > options.max_base_offset) continue;
-      if (!nearest || std::abs(it->t - rover.t) < std::abs(nearest->t - rover.t)) nearest = &*it;
-    }
+    const ObsEpoch* nearest = base.nearest(rover.t);
     if (!a || !nearest) continue;
     const std::optional<Eigen::Matrix3d> cov_e =
         fixedPhasePositionCovariance(builder.build(rover, *nearest, a->first), a->first);
-    if (!cov_e) continue;
-    PositionFix f;
-    f.t = rover.t;
-    f.p_e = a->first;
-    f.cov_enu = a->second.transpose() * *cov_e * a->second;
-    f.quality = 1;
-    fixes.push_back(f);
+    if (cov_e)
+      fixes.push_back(fixedAntenna(rover.t, a->first, a->second.transpose() * *cov_e * a->second));
   }
   return fixes;
 }
