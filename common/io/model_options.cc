@@ -29,6 +29,7 @@ ModelOptions readModelOptions(const YamlFields& y) {
   o.lateral_speed_density =
       y.numberOr(s + "lateral_speed_density", o.lateral_speed_density, 0.0, 10.0);
   o.tilt_rate_density = y.numberOr(s + "tilt_rate_density", o.tilt_rate_density, 0.0, 10.0);
+  o.lever_arm_min_turn = y.numberOr(s + "lever_arm_min_turn", o.lever_arm_min_turn, 0.0, 100.0);
   return o;
 }
 

@@ -40,6 +40,7 @@ OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odo
   n.yaw_rate_sigma = odometer.yaw_rate_sigma;
   n.lateral_speed_density = models.lateral_speed_density;
   n.tilt_rate_density = models.tilt_rate_density;
+  n.lever_arm_min_turn = models.lever_arm_min_turn;
   return n;
 }
 
@@ -79,6 +80,7 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
                                       r.J_p_j * rates.v_n_j + r.J_q_j * rates.w_b_j);
       jacobians->push_back(W * J_t_d.topRows(n));
     }
+    if (!pre_->turnInformsLeverArm()) (*jacobians)[6].setZero();
     // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
     const double h = 1e-6;
     (*jacobians)[4] += (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * rr / (2 * h);

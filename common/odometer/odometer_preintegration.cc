@@ -105,6 +105,11 @@ void OdometerPreintegration::integrateSamples(const std::vector<OdomSample>& sam
   }
 }
 
+bool OdometerPreintegration::turnInformsLeverArm() const {
+  return noise_.lever_arm_min_turn <= 0.0 ||
+         std::abs(Theta_) > noise_.lever_arm_min_turn * std::sqrt(cov_yaw_rate_(5, 5));
+}
+
 double OdometerPreintegration::yaw(double s_w) const { return (1.0 + s_w) * Theta_; }
 
 Vec3 OdometerPreintegration::deltaP_m(double s_v, double s_w) const {

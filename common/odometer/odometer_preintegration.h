@@ -28,6 +28,7 @@ struct OdometerPreintegrationNoise {
   double lateral_speed_density =
       0.01;                          // slip and uneven ground, lateral and vertical [m/s/sqrt(Hz)]
   double tilt_rate_density = 0.005;  // roll and pitch rate of uneven ground [rad/s/sqrt(Hz)]
+  double lever_arm_min_turn = 5.0;   // see turnInformsLeverArm() [sigma]
 };
 
 /// Residual [r_p (3), r_theta (3)] in m_k with Jacobians with respect to the right-perturbed
@@ -59,6 +60,11 @@ class OdometerPreintegration {
   /// The paper's (dp, dq): pose of b_j in b_k for a full calibration.
   Mat3 deltaR_b(const OdometerCalibration& c) const;
   Vec3 deltaP_b(const OdometerCalibration& c) const;
+  /// Whether the measured yaw is beyond lever_arm_min_turn of its own sigma. The lever-arm term
+  /// (R_bi_bj - I) p_b_m informs p_b_m only through a turn; within the yaw's noise the states'
+  /// R_bi_bj - I is noise too, and a regressor that is noise yields information the motion does
+  /// not hold (errors in variables; docs/design.md "A straight says nothing of the lever arm").
+  bool turnInformsLeverArm() const;
   /// Covariance of [dp_m, dtheta_m].
   const Eigen::Matrix<double, 6, 6>& covariance() const { return cov_; }
   /// The same for other scales: the measured speed's and yaw rate's noise enter multiplied by

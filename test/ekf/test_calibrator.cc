@@ -152,6 +152,16 @@ TEST(EkfCalibrator, ReopensTheCalibrationWhenTheOdometerIsGatedOutAgainAndAgain)
       prior.mean.q_b_m * Eigen::Quaterniond(Eigen::AngleAxisd(5.27 * kDegToRad, Vec3::UnitX()));
   CalibrationOptions options;
   options.odometer_iterations = 1;
+  // What made the filter sure on the straight was the lever-arm term's noise taken for
+  // information (models.lever_arm_min_turn); without it nothing is gated out or reopened.
+  const CalibrationRun turns_only = runEkf(in, options);
+  EXPECT_EQ(turns_only.counters.count("calibration_reopened")
+                ? turns_only.counters.at("calibration_reopened")
+                : 0,
+            0);
+  expectCalibrated(turns_only, in, 2.0);
+  // The mechanism, with that information back.
+  options.models.lever_arm_min_turn = 0.0;
   const CalibrationRun run = runEkf(in, options);
   EXPECT_GT(run.counters.at("calibration_reopened"), 0);
   ASSERT_FALSE(run.warnings.empty());

@@ -338,5 +338,36 @@ TEST(OdometerPreintegration, RejectsBadInput) {
   EXPECT_THROW(pre.integrateSamples({{1.0, 1.0, 0.0}}, 0.0, 2.0), std::invalid_argument);
 }
 
+TEST(OdometerPreintegration, OnlyATurnBeyondItsNoiseInformsTheLeverArm) {
+  // The lever-arm term (R_bi_bj - I) p_b_m needs a turn; within the yaw's noise the model leaves
+  // p_b_m's Jacobian out (docs/design.md, "A straight says nothing of the lever arm").
+  OdometerPreintegrationNoise noise;                                   // 1 deg/s per sample
+  const double sigma = noise.yaw_rate_sigma * 0.02 * std::sqrt(50.0);  // of the 1 s yaw
+  const auto interval = [&](double yaw, double min_turn) {
+    noise.lever_arm_min_turn = min_turn;
+    auto pre = std::make_shared<OdometerPreintegration>(noise, 0.0, 0.0);
+    for (int k = 0; k < 50; ++k) pre->integrate(0.02, 1.0, yaw);  // yaw rad over 1 s
+    return pre;
+  };
+  EXPECT_FALSE(interval(4.0 * sigma, 5.0)->turnInformsLeverArm());
+  EXPECT_FALSE(interval(-4.0 * sigma, 5.0)->turnInformsLeverArm());
+  EXPECT_TRUE(interval(6.0 * sigma, 5.0)->turnInformsLeverArm());
+  EXPECT_TRUE(interval(-6.0 * sigma, 5.0)->turnInformsLeverArm());
+  EXPECT_TRUE(interval(0.0, 0.0)->turnInformsLeverArm());  // 0: the exact Jacobian always
+
+  // Through the model: p_b_m's block is zero on the straight, the preintegration's on the turn.
+  const double p_i[3] = {0, 0, 0}, q_i[4] = {1, 0, 0, 0}, p_j[3] = {0.1, 1.0, 0};
+  const double q_j[4] = {std::cos(0.01), 0, 0, std::sin(0.01)}, s_v = 0.0, s_w = 0.0;
+  const double p_b_m[3] = {0.3, -0.2, 0.1}, q_b_m[4] = {1, 0, 0, 0};
+  const double* params[8] = {p_i, q_i, p_j, q_j, &s_v, &s_w, p_b_m, q_b_m};
+  for (const double yaw : {4.0 * sigma, 6.0 * sigma}) {
+    const OdometerPreintegrationModel model(interval(yaw, 5.0));
+    Eigen::VectorXd r;
+    std::vector<Eigen::MatrixXd> J;
+    model.evaluate(params, r, &J);
+    EXPECT_EQ(J[6].norm() > 0.0, yaw > 5.0 * sigma) << "yaw " << yaw / sigma << " sigma";
+  }
+}
+
 }  // namespace
 }  // namespace giocal

@@ -75,8 +75,8 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutWheelSlip) {
 TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
   // Paper seed 63 with wheel slip: the interval gates see little of a 0.5 s slip (the window
   // absorbs it into s_v and the lever arm); the samples checked against the IMU between the
-  // solved states show it. NEES7 614 without the check, 54 with it (docs/results.md); the clean
-  // drive of the seed loses no sample.
+  // solved states show it. NEES7 257 without the check, 35 with it (614 and 54 before the
+  // lever-arm term needed a turn, docs/results.md); the clean drive of the seed loses no sample.
   sim::SimConfig cfg =
       sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
   const CalibrationRun clean = replayInputs(simulated(cfg, 63), {"fgo", {}, {}}, nullptr);
@@ -91,16 +91,16 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
   EXPECT_GT(run.counter(Counter::kOdometerSlips), 30);
   const double nees_before = calibrationError(before.final(), in.truth->calib).nees7;
   const double nees = calibrationError(run.final(), in.truth->calib).nees7;
-  EXPECT_GT(nees_before, 300.0);
-  EXPECT_LT(nees, 100.0);
+  EXPECT_GT(nees_before, 200.0);
+  EXPECT_LT(nees, 100.0) << nees_before;
 }
 
 TEST(DegradedRuns, ACalibrationThatJumpsIsNamed) {
   // Paper seed 63 with wheel slip and the factor graph's slip check off: slips at 42-50 s,
   // where the factor graph first meets the circle, are absorbed into s_v and the lever arm with
-  // little residual, and the window then steps by chi-square 58 in one epoch (NEES7 614 at the
-  // end, docs/results.md). The step is what says so; the clean drive of the same seed steps by
-  // at most 9 (gate 29.9).
+  // little residual, and the window then steps by chi-square 35 in one epoch (NEES7 257 at the
+  // end; 58 and 614 before the lever-arm term needed a turn, docs/results.md). The step is what
+  // says so; the clean drive of the same seed steps by at most 9 (gate 29.9).
   sim::SimConfig cfg =
       sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
   FgoOptions unchecked;
