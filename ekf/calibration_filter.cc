@@ -249,8 +249,9 @@ void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
   s_.clone(state::kP, kOdoP);
   s_.clone(state::kQ, kOdoQ);
   odo_pre_ = std::make_unique<OdometerPreintegration>(
-      odometerPreintegrationNoise(dataset_.odom_noise, options_.models), s_.value(state::kSv)[0],
-      s_.value(state::kSw)[0]);
+      odometerPreintegrationNoise(dataset_.odom_noise, dataset_.imu_noise.gyro_noise_density,
+                                  options_.models),
+      s_.value(state::kSv)[0], s_.value(state::kSw)[0]);
   last_odo_ = sample;
   interval_moved_ = false;
   if (options_.estimate_odometer_delay) {

@@ -38,8 +38,9 @@ void FactorGraphCore::addOdometerFactor(const FgoEpoch& prev, const FgoEpoch& e,
                                         const std::vector<OdomSample>& samples) {
   const NavState x_prev = nav(prev);
   auto odo = std::make_shared<OdometerPreintegration>(
-      odometerPreintegrationNoise(in_.description.odom_noise, o_.models), w_.value(prev.sv)[0],
-      w_.value(prev.sw)[0]);
+      odometerPreintegrationNoise(in_.description.odom_noise,
+                                  in_.description.imu_noise.gyro_noise_density, o_.models),
+      w_.value(prev.sv)[0], w_.value(prev.sw)[0]);
   odo->integrateSamples(samples, prev.t, e.t);
   // With the odometer's delay as a state: the IMU's velocity and rate at both ends.
   std::optional<PoseRates> rates;

@@ -16,8 +16,8 @@ struct ModelOptions {
   double nhc_sigma = 0.05;              // lateral/vertical vehicle speed noise [m/s]
   double lateral_speed_density = 0.01;  // odometer slip and uneven ground [m/s/sqrt(Hz)]
   double tilt_rate_density = 0.005;     // roll/pitch rate of uneven ground [rad/s/sqrt(Hz)]
-  double lever_arm_min_turn = 5.0;      // an odometer interval informs p_b_m only when its measured
-                                        // yaw exceeds this many of its own sigmas [sigma]
+  double lever_arm_min_turn = 6.0;      // an odometer interval informs p_b_m only when the states
+                                        // turned by more than this many gyro sigmas over it [sigma]
 };
 
 /// Reads the "models" section of a giocal YAML config; keys left out keep their defaults.

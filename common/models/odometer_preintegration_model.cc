@@ -29,13 +29,30 @@ Eigen::Vector3d poseRate(const std::vector<ImuSample>& imu, double t, const Eige
   return meanGyro(imu, t, kPoseRateHalfWindow, gyro_noise_density).rate - b_g;
 }
 
+bool OdometerPreintegrationModel::informsLeverArm(const Eigen::Quaterniond& q_i,
+                                                  const Eigen::Quaterniond& q_j,
+                                                  const Eigen::Quaterniond& q_b_m) const {
+  const OdometerPreintegrationNoise& n = pre_->noise();
+  const double tilt_sigma = n.gyro_noise_density * std::sqrt(pre_->dt());  // the gyro's, per axis
+  // About the vertical a measured yaw rate narrows the states' turn as well.
+  const double odo_var = pre_->covariance()(5, 5);
+  const double yaw_sigma = rows_ == 6 && odo_var > 0.0 && tilt_sigma > 0.0
+                               ? 1.0 / std::sqrt(1.0 / (tilt_sigma * tilt_sigma) + 1.0 / odo_var)
+                               : tilt_sigma;
+  const Eigen::Vector3d turn_b = logSO3((q_i.conjugate() * q_j).toRotationMatrix());
+  return turnBeyondNoise(turn_b, q_b_m * Eigen::Vector3d::UnitZ(), yaw_sigma, tilt_sigma,
+                         n.lever_arm_min_turn);
+}
+
 Eigen::MatrixXd OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {
   return whitener(pre_->covarianceAt(s_v, s_w).topLeftCorner(rows_, rows_), name());
 }
 
 OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odometer,
+                                                        double gyro_noise_density,
                                                         const ModelOptions& models) {
   OdometerPreintegrationNoise n;
+  n.gyro_noise_density = gyro_noise_density;
   n.speed_sigma = odometer.speed_sigma;
   n.yaw_rate_sigma = odometer.yaw_rate_sigma;
   n.lateral_speed_density = models.lateral_speed_density;
@@ -80,7 +97,9 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
                                       r.J_p_j * rates.v_n_j + r.J_q_j * rates.w_b_j);
       jacobians->push_back(W * J_t_d.topRows(n));
     }
-    if (!pre_->turnInformsLeverArm()) (*jacobians)[6].setZero();
+    if (!informsLeverArm(quatAt(params[1]), quatAt(params[3]), c.q_b_m)) {
+      (*jacobians)[6].setZero();
+    }
     // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
     const double h = 1e-6;
     (*jacobians)[4] += (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * rr / (2 * h);

@@ -63,6 +63,13 @@ class OdometerPreintegrationModel : public MeasurementModel {
   Eigen::MatrixXd covariance() const override { return Eigen::MatrixXd::Identity(rows_, rows_); }
 
  private:
+  /// Whether the states' turn between the interval's ends is beyond models.lever_arm_min_turn of
+  /// its noise (turnBeyondNoise: the gyro's white noise over the interval, about the vehicle's
+  /// vertical fused with the odometer's yaw when it measures one). Otherwise p_b_m's Jacobian is
+  /// left out: its regressor would be noise (errors in variables). A gyro without a stated noise
+  /// density keeps the exact Jacobian.
+  bool informsLeverArm(const Eigen::Quaterniond& q_i, const Eigen::Quaterniond& q_j,
+                       const Eigen::Quaterniond& q_b_m) const;
   /// W with W^T W = covariance^-1 (of the rows in use) at these scales.
   Eigen::MatrixXd whitenerAt(double s_v, double s_w) const;
   std::shared_ptr<const OdometerPreintegration> pre_;
@@ -70,8 +77,10 @@ class OdometerPreintegrationModel : public MeasurementModel {
   std::optional<PoseRates> rates_;
 };
 
-/// The integral measurement's noise: the odometer's own, and the models' out-of-plane noise.
+/// The integral measurement's noise: the odometer's own, and the models' out-of-plane noise;
+/// the gyro's white noise [rad/s/sqrt(Hz)] for the lever-arm test.
 OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odometer,
+                                                        double gyro_noise_density,
                                                         const ModelOptions& models);
 
 }  // namespace giocal

@@ -105,9 +105,15 @@ void OdometerPreintegration::integrateSamples(const std::vector<OdomSample>& sam
   }
 }
 
-bool OdometerPreintegration::turnInformsLeverArm() const {
-  return noise_.lever_arm_min_turn <= 0.0 ||
-         std::abs(Theta_) > noise_.lever_arm_min_turn * std::sqrt(cov_yaw_rate_(5, 5));
+bool turnBeyondNoise(const Vec3& turn_b, const Vec3& up_b, double yaw_sigma, double tilt_sigma,
+                     double min_turn) {
+  if (min_turn <= 0.0) return true;
+  const double yaw = up_b.dot(turn_b);
+  const Vec3 tilt = turn_b - yaw * up_b;
+  const auto share = [](double x2, double sigma) {
+    return sigma > 0.0 ? x2 / (sigma * sigma) : INFINITY;
+  };
+  return share(yaw * yaw, yaw_sigma) + share(tilt.squaredNorm(), tilt_sigma) > min_turn * min_turn;
 }
 
 double OdometerPreintegration::yaw(double s_w) const { return (1.0 + s_w) * Theta_; }

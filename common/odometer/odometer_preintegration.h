@@ -28,8 +28,18 @@ struct OdometerPreintegrationNoise {
   double lateral_speed_density =
       0.01;                          // slip and uneven ground, lateral and vertical [m/s/sqrt(Hz)]
   double tilt_rate_density = 0.005;  // roll and pitch rate of uneven ground [rad/s/sqrt(Hz)]
-  double lever_arm_min_turn = 5.0;   // see turnInformsLeverArm() [sigma]
+  double gyro_noise_density = 0.0;   // the IMU's, for the lever-arm test below [rad/s/sqrt(Hz)]
+  double lever_arm_min_turn = 6.0;   // see OdometerPreintegrationModel [sigma]
 };
+
+/// Whether a turn (rotation vector of R_bi_bj, in b) is beyond min_turn of its noise: about the
+/// vehicle's vertical up_b with yaw_sigma, about the other axes with tilt_sigma (chi-square of
+/// three axes against min_turn^2); min_turn 0: true. The lever-arm term (R_bi_bj - I) p_b_m informs
+/// p_b_m only through such a turn; within the noise R_bi_bj - I is noise, and a regressor that is
+/// noise yields information the motion does not hold (errors in variables; docs/design.md "A
+/// straight says nothing of the lever arm").
+bool turnBeyondNoise(const Vec3& turn_b, const Vec3& up_b, double yaw_sigma, double tilt_sigma,
+                     double min_turn);
 
 /// Residual [r_p (3), r_theta (3)] in m_k with Jacobians with respect to the right-perturbed
 /// blocks: p and q of states i and j, the scales and the extrinsic.
@@ -52,6 +62,7 @@ class OdometerPreintegration {
   void integrateSamples(const std::vector<OdomSample>& samples, double t0, double t1);
 
   double dt() const { return dt_sum_; }
+  const OdometerPreintegrationNoise& noise() const { return noise_; }
   double linSv() const { return s_v_lin_; }
   double linSw() const { return s_w_lin_; }
   /// Yaw of m_j in m_k and position of m_j in m_k for the given scales (first order in s_w).
@@ -60,11 +71,6 @@ class OdometerPreintegration {
   /// The paper's (dp, dq): pose of b_j in b_k for a full calibration.
   Mat3 deltaR_b(const OdometerCalibration& c) const;
   Vec3 deltaP_b(const OdometerCalibration& c) const;
-  /// Whether the measured yaw is beyond lever_arm_min_turn of its own sigma. The lever-arm term
-  /// (R_bi_bj - I) p_b_m informs p_b_m only through a turn; within the yaw's noise the states'
-  /// R_bi_bj - I is noise too, and a regressor that is noise yields information the motion does
-  /// not hold (errors in variables; docs/design.md "A straight says nothing of the lever arm").
-  bool turnInformsLeverArm() const;
   /// Covariance of [dp_m, dtheta_m].
   const Eigen::Matrix<double, 6, 6>& covariance() const { return cov_; }
   /// The same for other scales: the measured speed's and yaw rate's noise enter multiplied by

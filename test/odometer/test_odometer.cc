@@ -339,33 +339,41 @@ TEST(OdometerPreintegration, RejectsBadInput) {
 }
 
 TEST(OdometerPreintegration, OnlyATurnBeyondItsNoiseInformsTheLeverArm) {
-  // The lever-arm term (R_bi_bj - I) p_b_m needs a turn; within the yaw's noise the model leaves
-  // p_b_m's Jacobian out (docs/design.md, "A straight says nothing of the lever arm").
-  OdometerPreintegrationNoise noise;                                   // 1 deg/s per sample
-  const double sigma = noise.yaw_rate_sigma * 0.02 * std::sqrt(50.0);  // of the 1 s yaw
-  const auto interval = [&](double yaw, double min_turn) {
-    noise.lever_arm_min_turn = min_turn;
-    auto pre = std::make_shared<OdometerPreintegration>(noise, 0.0, 0.0);
-    for (int k = 0; k < 50; ++k) pre->integrate(0.02, 1.0, yaw);  // yaw rad over 1 s
-    return pre;
-  };
-  EXPECT_FALSE(interval(4.0 * sigma, 5.0)->turnInformsLeverArm());
-  EXPECT_FALSE(interval(-4.0 * sigma, 5.0)->turnInformsLeverArm());
-  EXPECT_TRUE(interval(6.0 * sigma, 5.0)->turnInformsLeverArm());
-  EXPECT_TRUE(interval(-6.0 * sigma, 5.0)->turnInformsLeverArm());
-  EXPECT_TRUE(interval(0.0, 0.0)->turnInformsLeverArm());  // 0: the exact Jacobian always
+  // The lever-arm term (R_bi_bj - I) p_b_m needs a turn of the states; within its noise the model
+  // leaves p_b_m's Jacobian out (docs/design.md, "A straight says nothing of the lever arm").
+  const Vec3 up(0, 0, 1);
+  EXPECT_FALSE(turnBeyondNoise(Vec3(0, 0, 5.9), up, 1.0, 1.0, 6.0));
+  EXPECT_TRUE(turnBeyondNoise(Vec3(0, 0, -6.1), up, 1.0, 1.0, 6.0));
+  EXPECT_FALSE(turnBeyondNoise(Vec3(3, 0, -4), up, 1.0, 1.0, 6.0));   // 5 sigma over the axes
+  EXPECT_TRUE(turnBeyondNoise(Vec3(0, 0.7, 0), up, 10.0, 0.1, 6.0));  // a hill's pitch turns too
+  EXPECT_FALSE(turnBeyondNoise(Vec3(0.7, 0, 0), Vec3(1, 0, 0), 1.0, 0.1, 6.0));  // up is b's x
+  EXPECT_TRUE(turnBeyondNoise(Vec3(0, 0, 1e-9), up, 1.0, 1.0, 0.0));             // 0: always
 
-  // Through the model: p_b_m's block is zero on the straight, the preintegration's on the turn.
+  // Through the model, with the paper preset's gyro (20 deg/sqrt(h)) and odometer (1 deg/s at
+  // 50 Hz here): the states' yaw over 1 s has sigma 1 / sqrt(1 / 0.0058^2 + 1 / odo^2).
+  OdometerPreintegrationNoise noise;
+  noise.gyro_noise_density = 0.0058;
+  noise.lever_arm_min_turn = 6.0;
+  const double odo = noise.yaw_rate_sigma * 0.02 * std::sqrt(50.0);
+  const double sigma = 1.0 / std::sqrt(1.0 / (0.0058 * 0.0058) + 1.0 / (odo * odo));
   const double p_i[3] = {0, 0, 0}, q_i[4] = {1, 0, 0, 0}, p_j[3] = {0.1, 1.0, 0};
-  const double q_j[4] = {std::cos(0.01), 0, 0, std::sin(0.01)}, s_v = 0.0, s_w = 0.0;
-  const double p_b_m[3] = {0.3, -0.2, 0.1}, q_b_m[4] = {1, 0, 0, 0};
-  const double* params[8] = {p_i, q_i, p_j, q_j, &s_v, &s_w, p_b_m, q_b_m};
-  for (const double yaw : {4.0 * sigma, 6.0 * sigma}) {
-    const OdometerPreintegrationModel model(interval(yaw, 5.0));
+  const double s_v = 0.0, s_w = 0.0, p_b_m[3] = {0.3, -0.2, 0.1}, q_b_m[4] = {1, 0, 0, 0};
+  for (const double yaw : {5.0 * sigma, 7.0 * sigma}) {
+    auto pre = std::make_shared<OdometerPreintegration>(noise, 0.0, 0.0);
+    for (int k = 0; k < 50; ++k) pre->integrate(0.02, 1.0, yaw);
+    EXPECT_NEAR(std::sqrt(pre->covariance()(5, 5)), odo, 1e-9);
+    const Quat q_j(expSO3(Vec3(0, 0, yaw)));
+    const double q_j_wxyz[4] = {q_j.w(), q_j.x(), q_j.y(), q_j.z()};
+    const double* params[8] = {p_i, q_i, p_j, q_j_wxyz, &s_v, &s_w, p_b_m, q_b_m};
     Eigen::VectorXd r;
     std::vector<Eigen::MatrixXd> J;
-    model.evaluate(params, r, &J);
-    EXPECT_EQ(J[6].norm() > 0.0, yaw > 5.0 * sigma) << "yaw " << yaw / sigma << " sigma";
+    OdometerPreintegrationModel(pre).evaluate(params, r, &J);
+    EXPECT_EQ(J[6].norm() > 0.0, yaw > 6.0 * sigma) << yaw / sigma << " sigma";
+    // The preintegration's own Jacobian stays the exact one.
+    EXPECT_GT(
+        pre->evaluate(Vec3::Zero(), Quat::Identity(), Vec3(0.1, 1, 0), q_j, OdometerCalibration{})
+            .J_p_b_m.norm(),
+        0.0);
   }
 }
 
