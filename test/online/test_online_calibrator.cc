@@ -54,7 +54,7 @@ void expectFinal(const CalibrationRun& run, const Expected& x) {
 // half second of the drive (EKF yaw 8.554 -> 7.969 deg, 0.25 sigma; factor graph 8.181 -> 7.843);
 // with `models.zupt_max_accel_change: 100` the old values come back. The batch also took every
 // odometer interval's lever-arm term for information on p_b_m (`models.lever_arm_min_turn: 0`);
-// with the default 3, EKF yaw 7.969 -> 8.249 deg (0.12 sigma), factor graph 7.843 -> 7.652.
+// with the default (6), EKF yaw 7.969 -> 8.249 deg (0.12 sigma), factor graph 7.843 -> 7.652.
 TEST(OnlineCalibrator, StreamedReplayEqualsTheBatchCalibrators) {
   test::TempDir dir;
   const std::string data = simulatePaper(dir, 1);
