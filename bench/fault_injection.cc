@@ -4,6 +4,8 @@
 // 1 ms receiver clock jump, wheel-slip bursts, a lever arm 0.1 m wrong). Prints per fault and
 // estimator the final calibration error as a ratio to the clean run's, NEES7, and what the run
 // said (warnings, status). Usage: giocal_fault_injection [--preset <yaml>] [--seed N] [--laps N]
+// [--leave-one-out 1] (also "all of the above" without each fault in turn, wheel slip included:
+// which faults make a combination's error)
 #include <unistd.h>
 
 #include <algorithm>
@@ -174,6 +176,7 @@ int main(int argc, char** argv) {
   std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
   std::uint64_t seed = 61;
   int laps = 0;
+  bool leave_one_out = false;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--preset")
@@ -182,6 +185,8 @@ int main(int argc, char** argv) {
       seed = std::stoull(argv[i + 1]);
     else if (a == "--laps")
       laps = std::stoi(argv[i + 1]);
+    else if (a == "--leave-one-out")
+      leave_one_out = std::stoi(argv[i + 1]) != 0;
     else {
       std::cerr << "unknown option " << a << "\n";
       return 2;
@@ -209,13 +214,25 @@ int main(int argc, char** argv) {
     cases.push_back({f.name, in});
   }
   cases.push_back({"wheel-slip bursts 2/min", load(slipping)});
-  CalibrationInputs all = cases.back().second;
+  const CalibrationInputs slip_data = cases.back().second;
+  CalibrationInputs all = slip_data;
   for (const Named& f : faults()) f.apply(all, rng);
   cases.push_back({"all of the above", all});
+  if (leave_one_out) {
+    const std::vector<Named> each = faults();
+    for (size_t skip = 0; skip <= each.size(); ++skip) {
+      const bool skip_slip = skip == each.size();
+      std::mt19937_64 r(seed);
+      CalibrationInputs c = skip_slip ? clean : slip_data;
+      for (size_t k = 0; k < each.size(); ++k)
+        if (k != skip) each[k].apply(c, r);
+      cases.push_back({"all but " + (skip_slip ? std::string("wheel slip") : each[skip].name), c});
+    }
+  }
 
   std::printf("preset %s, seed %llu, %.0f s of data\n", preset.c_str(),
               static_cast<unsigned long long>(seed), clean.dataDuration());
-  std::printf("%-28s %-4s %9s %8s  %s\n", "fault", "est", "err/clean", "NEES7",
+  std::printf("%-34s %-4s %9s %8s  %s\n", "fault", "est", "err/clean", "NEES7",
               "what the run said beyond the clean run's (status, warnings, counters)");
   for (const std::string est : {"ekf", "fgo"}) {
     double clean_score = NAN;
@@ -234,7 +251,7 @@ int main(int argc, char** argv) {
       }
       if (name == "clean") clean_score = s;
       if (said.size() > 160) said = said.substr(0, 157) + "...";
-      std::printf("%-28s %-4s %9.2f %8.2f  %s\n", name.c_str(), est.c_str(), s / clean_score, nees,
+      std::printf("%-34s %-4s %9.2f %8.2f  %s\n", name.c_str(), est.c_str(), s / clean_score, nees,
                   said.c_str());
       std::fflush(stdout);
     }
