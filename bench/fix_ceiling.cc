@@ -26,6 +26,7 @@
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/dd_epoch.h"
 #include "common/gnss/rtk.h"
+#include "common/gnss/spp.h"
 #include "common/io/scenes_csv.h"
 #include "common/io/sensor_logs.h"
 #include "common/math/rotation.h"
@@ -80,13 +81,9 @@ std::optional<OracleFix> solveWithTrueIntegers(const DdEpoch& epoch, const Eigen
   }
   const Eigen::Matrix3d cov_n = R_e_n.transpose() * info.inverse() * R_e_n;
   const Eigen::Vector3d d_n = R_e_n.transpose() * (x - truth_e);
-  // Wilson-Hilferty's 99 % quantile of chi-square (z = 2.326).
-  const double dof = static_cast<double>(rows.size()) - 3.0;
-  const double bound =
-      dof > 0 ? dof * std::pow(1.0 - 2.0 / (9.0 * dof) + 2.326 * std::sqrt(2.0 / (9.0 * dof)), 3)
-              : 0.0;
+  const int dof = static_cast<int>(rows.size()) - 3;
   return OracleFix{std::sqrt(cov_n(0, 0) + cov_n(1, 1)), d_n.head<2>().norm(),
-                   dof <= 0 || chi2 <= bound};
+                   dof <= 0 || chi2 <= chi2Quantile(0.99, dof)};
 }
 
 struct SceneTally {
