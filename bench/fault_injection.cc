@@ -5,7 +5,8 @@
 // estimator the final calibration error as a ratio to the clean run's, NEES7, and what the run
 // said (warnings, status). Usage: giocal_fault_injection [--preset <yaml>] [--seed N] [--laps N]
 // [--leave-one-out 1] (also "all of the above" without each fault in turn, wheel slip included:
-// which faults make a combination's error)
+// which faults make a combination's error) [--combine "<name prefix>,<name prefix>"] (only the
+// clean run and that one combination; "wheel slip" names the slip bursts) [--estimator ekf|fgo]
 #include <unistd.h>
 
 #include <algorithm>
@@ -177,6 +178,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 61;
   int laps = 0;
   bool leave_one_out = false;
+  std::string combine, only_estimator;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
     if (a == "--preset")
@@ -187,6 +189,10 @@ int main(int argc, char** argv) {
       laps = std::stoi(argv[i + 1]);
     else if (a == "--leave-one-out")
       leave_one_out = std::stoi(argv[i + 1]) != 0;
+    else if (a == "--combine")
+      combine = argv[i + 1];
+    else if (a == "--estimator")
+      only_estimator = argv[i + 1];
     else {
       std::cerr << "unknown option " << a << "\n";
       return 2;
@@ -208,17 +214,34 @@ int main(int argc, char** argv) {
   slipping.odometer.slip_rate_per_min = 2.0;  // wheel-slip bursts: 0.5 s at 1.3x, 2 a minute
   std::vector<std::pair<std::string, CalibrationInputs>> cases{{"clean", clean}};
   std::mt19937_64 rng(seed);
-  for (const Named& f : faults()) {
+  if (!combine.empty()) {
+    std::vector<std::string> names;
+    for (size_t a = 0, b; a <= combine.size(); a = b + 1) {
+      b = std::min(combine.find(',', a), combine.size());
+      names.push_back(combine.substr(a, b - a));
+    }
+    const auto named = [&](const std::string& fault) {
+      return std::any_of(names.begin(), names.end(),
+                         [&](const std::string& n) { return fault.rfind(n, 0) == 0; });
+    };
+    CalibrationInputs c = named("wheel slip") ? load(slipping) : clean;
+    for (const Named& f : faults())
+      if (named(f.name)) f.apply(c, rng);
+    cases = {{"clean", clean}, {combine, c}};
+  }
+  for (const Named& f : combine.empty() ? faults() : std::vector<Named>{}) {
     CalibrationInputs in = clean;
     f.apply(in, rng);
     cases.push_back({f.name, in});
   }
-  cases.push_back({"wheel-slip bursts 2/min", load(slipping)});
-  const CalibrationInputs slip_data = cases.back().second;
-  CalibrationInputs all = slip_data;
-  for (const Named& f : faults()) f.apply(all, rng);
-  cases.push_back({"all of the above", all});
-  if (leave_one_out) {
+  if (combine.empty()) {
+    cases.push_back({"wheel-slip bursts 2/min", load(slipping)});
+    CalibrationInputs all = cases.back().second;
+    for (const Named& f : faults()) f.apply(all, rng);
+    cases.push_back({"all of the above", all});
+  }
+  if (leave_one_out && combine.empty()) {
+    const CalibrationInputs slip_data = load(slipping);
     const std::vector<Named> each = faults();
     for (size_t skip = 0; skip <= each.size(); ++skip) {
       const bool skip_slip = skip == each.size();
@@ -235,6 +258,7 @@ int main(int argc, char** argv) {
   std::printf("%-34s %-4s %9s %8s  %s\n", "fault", "est", "err/clean", "NEES7",
               "what the run said beyond the clean run's (status, warnings, counters)");
   for (const std::string est : {"ekf", "fgo"}) {
+    if (!only_estimator.empty() && est != only_estimator) continue;
     double clean_score = NAN;
     giocal::CalibrationRun clean_run;
     for (const auto& [name, in] : cases) {

@@ -241,8 +241,8 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   // Motion constraints and whether the robot stood still over the interval.
   feedMotion(e.t, x_prev.b_g);
   e.still = motion_.isStatic();
-  if (in_.odom.front().t <= prev.t) {
-    addOdometerFactor(prev, e, odometerSamples(prev.t, e.t));
+  if (const std::vector<OdomSample> samples = intervalSamples(prev, e); !samples.empty()) {
+    addOdometerFactor(prev, e, samples);
     run_->count(Counter::kOdometerIntervals);
   }
   // Scales and clock drift as random walks; the floor keeps a zero density well posed (why 1e-6:

@@ -85,6 +85,9 @@ class FactorGraphCore : public EstimatorCore {
   // Odometer intervals (fgo/odometer_slip_check.cc).
   /// The odometer samples over [t0, t1] with the one before t0 and the one after t1.
   std::vector<OdomSample> odometerSamples(double t0, double t1) const;
+  /// The samples of the interval from prev to e, empty when it has no odometer factor: before the
+  /// first sample, or across a gap longer than calibration.max_odometer_gap_s (the IMU alone).
+  std::vector<OdomSample> intervalSamples(const FgoEpoch& prev, const FgoEpoch& e) const;
   void addOdometerFactor(const FgoEpoch& prev, const FgoEpoch& e,
                          const std::vector<OdomSample>& samples);
   /// After a solve: samples of the interval prev-e whose speed leaves the interval's common

@@ -10,6 +10,7 @@
 #include "common/models/odometer_preintegration_model.h"
 #include "common/models/planar_motion_projection.h"
 #include "common/models/standstill_projection.h"
+#include "common/odometer/odometer_preintegration.h"
 #include "common/odometer/vehicle_velocity.h"
 #include "fgo/factor_graph_core.h"
 #include "fgo/factor_tag.h"
@@ -32,6 +33,14 @@ std::vector<OdomSample> FactorGraphCore::odometerSamples(double t0, double t1) c
   const auto last = after(t1);
   return {first == in_.odom.begin() ? first : std::prev(first),
           last == in_.odom.end() ? last : std::next(last)};
+}
+
+std::vector<OdomSample> FactorGraphCore::intervalSamples(const FgoEpoch& prev,
+                                                         const FgoEpoch& e) const {
+  if (in_.odom.empty() || in_.odom.front().t > prev.t) return {};
+  std::vector<OdomSample> samples = odometerSamples(prev.t, e.t);
+  if (longestOdometerGap(samples, prev.t, e.t) > o_.max_odometer_gap_s) return {};
+  return samples;
 }
 
 void FactorGraphCore::addOdometerFactor(const FgoEpoch& prev, const FgoEpoch& e,
@@ -60,8 +69,8 @@ void FactorGraphCore::addOdometerFactor(const FgoEpoch& prev, const FgoEpoch& e,
 
 bool FactorGraphCore::leaveOutSlips(const FgoEpoch& prev, const FgoEpoch& e) {
   if (!(fo_.odometer_slip_sigma > 0.0) || (prev.still && e.still)) return false;
-  if (in_.odom.front().t > prev.t) return false;  // no interval factor at this epoch
-  const std::vector<OdomSample> samples = odometerSamples(prev.t, e.t);
+  const std::vector<OdomSample> samples = intervalSamples(prev, e);
+  if (samples.empty()) return false;  // no interval factor at this epoch
   // The IMU's velocity from the solved state before, pinned to the solved state after: over a
   // second a MEMS gyro's attitude walk alone moves the prediction by centimetres per second
   // (paper preset, 3 cm/s), a slip at 0.25 m/s by 7.5 cm/s.

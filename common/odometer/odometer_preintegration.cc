@@ -105,6 +105,18 @@ void OdometerPreintegration::integrateSamples(const std::vector<OdomSample>& sam
   }
 }
 
+double longestOdometerGap(const std::vector<OdomSample>& samples, double t0, double t1) {
+  // Two readings bracketing part of [t0, t1] are as far apart as the gap integrateSamples
+  // interpolates over, though only part of it may lie inside.
+  double longest = 0.0, before = t0;
+  for (const OdomSample& s : samples) {
+    if (s.t > t0) longest = std::max(longest, s.t - before);
+    if (s.t >= t1) return longest;
+    before = s.t;
+  }
+  return std::max(longest, t1 - before);
+}
+
 bool turnBeyondNoise(const Vec3& turn_b, const Vec3& up_b, double yaw_sigma, double tilt_sigma,
                      double min_turn) {
   if (min_turn <= 0.0) return true;

@@ -338,6 +338,20 @@ TEST(OdometerPreintegration, RejectsBadInput) {
   EXPECT_THROW(pre.integrateSamples({{1.0, 1.0, 0.0}}, 0.0, 2.0), std::invalid_argument);
 }
 
+TEST(OdometerPreintegration, TheLongestGapCountsWhatTheIntegrationBridges) {
+  // 10 Hz with a hole: the samples at 1.95 and 4.05 s bracket it, 2.1 s apart.
+  std::vector<OdomSample> s;
+  for (double t = 0.05; t < 6.0; t += 0.1)
+    if (t < 2.0 || t > 4.0) s.push_back({t, 1.0, 0.0});
+  EXPECT_NEAR(longestOdometerGap(s, 0.0, 1.0), 0.1, 1e-9);
+  EXPECT_NEAR(longestOdometerGap(s, 3.0, 3.5), 2.1, 1e-9);  // inside the hole
+  EXPECT_NEAR(longestOdometerGap(s, 1.5, 2.5), 2.1, 1e-9);  // the hole begins inside
+  EXPECT_NEAR(longestOdometerGap(s, 3.5, 4.5), 2.1, 1e-9);  // the hole ends inside
+  EXPECT_NEAR(longestOdometerGap(s, 4.5, 5.5), 0.1, 1e-9);
+  // After the last sample its reading is held up to t1.
+  EXPECT_NEAR(longestOdometerGap(s, 5.5, 7.0), 7.0 - s.back().t, 1e-9);
+}
+
 TEST(OdometerPreintegration, OnlyATurnBeyondItsNoiseInformsTheLeverArm) {
   // The lever-arm term (R_bi_bj - I) p_b_m needs a turn of the states; within its noise the model
   // leaves p_b_m's Jacobian out (docs/design.md, "A straight says nothing of the lever arm").
