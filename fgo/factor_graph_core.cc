@@ -332,26 +332,6 @@ bool FactorGraphCore::rejectPosition(const FgoEpoch& e, const PositionFix& fix) 
   return true;
 }
 
-bool FactorGraphCore::rejectOdometer(const FgoEpoch& e) {
-  // As the EKF's gate of an odometer interval, on the solved window: an interval the solution
-  // cannot fit (wheel slip) leaves the window instead of pulling the scales.
-  const std::string tag = tagged("odometer", e.k);
-  const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
-  for (const Factor& f : window.factors()) {
-    if (f.tag != tag) continue;
-    std::vector<const double*> params;
-    for (const StateKey& v : f.vars) params.push_back(window.value(v).data());
-    Eigen::VectorXd r;
-    f.model->evaluate(params.data(), r, nullptr);
-    const double nis = (*f.sqrt_info * r).squaredNorm();
-    if (nis <= chi2Quantile(o_.chi2_probability, static_cast<int>(r.size()))) return false;
-    run_->count(Counter::kOdometerRejected);
-    w_.removeFactors(tag);
-    return true;
-  }
-  return false;
-}
-
 void FactorGraphCore::trajectoryUpTo(double t, const std::function<void(const TruthSample&)>& out) {
   size_t n = 0;
   while (n < trajectory_.size() && trajectory_[n].t <= t + 1e-9) out(trajectory_[n++]);

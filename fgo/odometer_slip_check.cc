@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/gnss/spp.h"
 #include "common/imu/gyro_mean.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/math/median.h"
@@ -14,6 +15,7 @@
 #include "common/odometer/vehicle_velocity.h"
 #include "fgo/factor_graph_core.h"
 #include "fgo/factor_tag.h"
+#include "fgo/predicted_residual.h"
 
 namespace giocal {
 
@@ -120,6 +122,23 @@ bool FactorGraphCore::leaveOutSlips(const FgoEpoch& prev, const FgoEpoch& e) {
   w_.removeFactors(tagged("odometer", e.k));
   addOdometerFactor(prev, e, kept);
   return true;
+}
+
+bool FactorGraphCore::rejectOdometer(const FgoEpoch& e) {
+  // As the EKF's gate of an odometer interval: an interval the rest of the window cannot fit
+  // (wheel slip) leaves the window instead of pulling the scales. The solved residual alone
+  // understates it by what the interval pulled the solution (predicted_residual.h).
+  const std::string tag = tagged("odometer", e.k);
+  const SlidingWindow& window = w_;  // reading only: keeps the factorization cached
+  for (const Factor& f : window.factors()) {
+    if (f.tag != tag) continue;
+    const PredictedResidual p = predictedResidual(window, f);
+    if (p.dof == 0 || p.chi2 <= chi2Quantile(o_.chi2_probability, p.dof)) return false;
+    run_->count(Counter::kOdometerRejected);
+    w_.removeFactors(tag);
+    return true;
+  }
+  return false;
 }
 
 }  // namespace giocal

@@ -52,6 +52,7 @@ class SlidingWindow {
   const StateBlock& block(const StateKey& name) const;
   /// Constant variables are not estimated (a lever arm given as known).
   void setConstant(const StateKey& name, bool constant);
+  bool isConstant(const StateKey& name) const { return vars_.at(name).constant; }
   /// Components of a vector variable held at their value (p_b_m.z in planar motion).
   void holdComponents(const StateKey& name, const std::vector<int>& components);
 

@@ -90,10 +90,10 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutWheelSlip) {
 }
 
 TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
-  // Paper seed 63 with wheel slip: the interval gates see little of a 0.5 s slip (the window
-  // absorbs it into s_v and the lever arm); the samples checked against the IMU between the
-  // solved states show it. NEES7 257 without the check, 35 with it (614 and 54 before the
-  // lever-arm term needed a turn, docs/results.md); the clean drive of the seed loses no sample.
+  // Paper seed 63 with wheel slip: the interval gate sees part of a 0.5 s slip (the window
+  // absorbs the rest into s_v and the lever arm); the samples checked against the IMU between the
+  // solved states show it. NEES7 57 without the check, 13 with it (257 and 35 while the gate
+  // tested the solved residual, docs/results.md); the clean drive of the seed loses no sample.
   sim::SimConfig cfg =
       sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
   const CalibrationRun clean = replayInputs(simulated(cfg, 63), {"fgo", {}, {}}, nullptr);
@@ -108,8 +108,8 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
   EXPECT_GT(run.counter(Counter::kOdometerSlips), 30);
   const double nees_before = calibrationError(before.final(), in.truth->calib).nees7;
   const double nees = calibrationError(run.final(), in.truth->calib).nees7;
-  EXPECT_GT(nees_before, 200.0);
-  EXPECT_LT(nees, 100.0) << nees_before;
+  EXPECT_GT(nees_before, 2.0 * nees);
+  EXPECT_LT(nees, 25.0) << nees_before;
 }
 
 TEST(DegradedRuns, ACalibrationThatJumpsIsNamed) {
