@@ -66,7 +66,7 @@ OdomSample OdometerErrors::measure(double t, double speed, double yaw_rate, doub
     factor = spec_.slip_speed_factor;
   } else if (std::abs(speed) > 0.05 && spec_.slip_rate_per_min > 0.0) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
-    if (u(rng) < spec_.slip_rate_per_min / 60.0 * dt) {
+    if (u(slip_rng_) < spec_.slip_rate_per_min / 60.0 * dt) {
       slip_left_ = spec_.slip_duration_s;
       ++slip_events_;
     }

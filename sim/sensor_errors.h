@@ -39,8 +39,10 @@ class ImuErrors {
 
 class OdometerErrors {
  public:
-  OdometerErrors(const OdometerErrorSpec& spec, double s_v, double s_w)
-      : spec_(spec), s_v_(s_v), s_w_(s_w) {}
+  /// `slip_seed` draws the slip events apart from the noise: a drive with slip has the same
+  /// noise as the drive without it (the fault bench compares the two).
+  OdometerErrors(const OdometerErrorSpec& spec, double s_v, double s_w, std::uint64_t slip_seed)
+      : spec_(spec), s_v_(s_v), s_w_(s_w), slip_rng_(slip_seed) {}
   /// measured = true / (1 + s) + noise, quantized; the scales drift as random walks; while the
   /// wheels slip (Poisson events while driving) the measured speed is slip_speed_factor too high.
   OdomSample measure(double t, double speed, double yaw_rate, double dt, std::mt19937_64& rng);
@@ -51,6 +53,7 @@ class OdometerErrors {
  private:
   OdometerErrorSpec spec_;
   double s_v_, s_w_;
+  std::mt19937_64 slip_rng_;
   double slip_left_ = 0.0;  // time left in the current wheel-slip event [s]
   int slip_events_ = 0;
 };

@@ -77,7 +77,7 @@ SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& 
   truth_a.p_b_m = R_a_b * config.truth.p_b_m;
   const Eigen::Vector3d p_a_g = R_a_b * config.p_b_g;
   const OdometerCalibration& truth = config.truth;
-  OdometerErrors odo_errors(config.odometer, truth.s_v, truth.s_w);
+  OdometerErrors odo_errors(config.odometer, truth.s_v, truth.s_w, seed * 4 + 2 + (1ull << 62));
   const Eigen::Matrix3d R_b_m = truth.q_b_m.toRotationMatrix();
   const Eigen::Matrix3d R_m_b = R_b_m.transpose();
   const Eigen::Vector3d p_m_b = -R_m_b * truth.p_b_m;

@@ -90,10 +90,11 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutWheelSlip) {
 }
 
 TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
-  // Paper seed 63 with wheel slip: the interval gate sees part of a 0.5 s slip (the window
-  // absorbs the rest into s_v and the lever arm); the samples checked against the IMU between the
-  // solved states show it. NEES7 57 without the check, 13 with it (257 and 35 while the gate
-  // tested the solved residual, docs/results.md); the clean drive of the seed loses no sample.
+  // Paper seed 63 with wheel slip: the samples checked against the IMU between the solved states
+  // show the bursts, and leaving them out keeps the run consistent; the clean drive of the seed
+  // loses no sample. (With the odometer gate testing the predicted residual, the check is
+  // about neutral on the paper preset: NEES7 5.8 with it, 4.9 without on this seed, 22.6 and
+  // 31.7 on seed 66; docs/results.md.)
   sim::SimConfig cfg =
       sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
   const CalibrationRun clean = replayInputs(simulated(cfg, 63), {"fgo", {}, {}}, nullptr);
@@ -106,28 +107,31 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
   const CalibrationRun run = replayInputs(in, {"fgo", {}, {}}, nullptr);
   EXPECT_EQ(before.counter(Counter::kOdometerSlips), 0);
   EXPECT_GT(run.counter(Counter::kOdometerSlips), 30);
-  const double nees_before = calibrationError(before.final(), in.truth->calib).nees7;
-  const double nees = calibrationError(run.final(), in.truth->calib).nees7;
-  EXPECT_GT(nees_before, 2.0 * nees);
-  EXPECT_LT(nees, 25.0) << nees_before;
+  // 14.1: the 95 % bound of a consistent run's NEES7.
+  EXPECT_LT(calibrationError(run.final(), in.truth->calib).nees7, 14.1);
 }
 
 TEST(DegradedRuns, ACalibrationThatJumpsIsNamed) {
-  // Paper seed 63 with wheel slip and the factor graph's slip check off: slips at 42-50 s,
-  // where the factor graph first meets the circle, are absorbed into s_v and the lever arm with
-  // little residual, and the window then steps by chi-square 35 in one epoch (NEES7 257 at the
-  // end; 58 and 614 before the lever-arm term needed a turn, docs/results.md). The step is what
-  // says so; the clean drive of the same seed steps by at most 9 (gate 29.9).
-  sim::SimConfig cfg =
+  // Paper seed 63 whose odometer reads 10 % more from 80 s on (a wheel changed, a softer tyre):
+  // the data after disagree with those before, and the estimate moves further in one epoch than
+  // one epoch's data can move it (chi-square in its sigmas before, gate 29.9 at 7 dof). Both
+  // estimators name it; the clean drive of the seed steps by less. (Until 2026-11-27 this test
+  // used wheel slip with the factor graph's slip check off; since its odometer gate tests the
+  // residual the rest of the window predicts, the gate takes those intervals out first.)
+  const sim::SimConfig cfg =
       sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
-  FgoOptions unchecked;
-  unchecked.odometer_slip_sigma = 0.0;
-  const CalibrationRun clean = replayInputs(simulated(cfg, 63), {"fgo", {}, unchecked}, nullptr);
-  EXPECT_EQ(clean.counter(Counter::kCalibrationJumps), 0);
-  cfg.odometer.slip_rate_per_min = 2.0;
-  const CalibrationRun run = replayInputs(simulated(cfg, 63), {"fgo", {}, unchecked}, nullptr);
-  EXPECT_GE(run.counter(Counter::kCalibrationJumps), 1);
-  EXPECT_TRUE(says(run, "the calibration moved further in one epoch")) << run.warnings.front();
+  const CalibrationInputs clean = simulated(cfg, 63);
+  CalibrationInputs in = clean;
+  const double t0 = in.rover.epochs.front().t;
+  for (OdomSample& s : in.odom)
+    if (s.t >= t0 + 80.0) s.v *= 1.1;
+  for (const char* est : {"ekf", "fgo"}) {
+    SCOPED_TRACE(est);
+    EXPECT_EQ(replayInputs(clean, {est, {}, {}}, nullptr).counter(Counter::kCalibrationJumps), 0);
+    const CalibrationRun run = replayInputs(in, {est, {}, {}}, nullptr);
+    EXPECT_GE(run.counter(Counter::kCalibrationJumps), 1);
+    EXPECT_TRUE(says(run, "the calibration moved further in one epoch")) << run.warnings.front();
+  }
 }
 
 TEST(DegradedRuns, BothEstimatorsSayWhenTheyDivergeAndStartAgain) {
