@@ -4,6 +4,8 @@
 // 1 ms receiver clock jump, wheel-slip bursts, a lever arm 0.1 m wrong). Prints per fault and
 // estimator the final calibration error as a ratio to the clean run's, NEES7, and what the run
 // said (warnings, status). Usage: giocal_fault_injection [--preset <yaml>] [--seed N] [--laps N]
+// [--seeds N] (seeds seed..seed+N-1: per fault and estimator the RMS over seeds of the error
+// against the clean runs', the largest single ratio, the mean NEES7, the runs that said why)
 // [--leave-one-out 1] (also "all of the above" without each fault in turn, wheel slip included:
 // which faults make a combination's error) [--combine "<name prefix>,<name prefix>"] (only the
 // clean run and that one combination; "wheel slip" names the slip bursts) [--estimator ekf|fgo]
@@ -171,35 +173,26 @@ double score(const giocal::CalibrationRun& run, const CalibrationInputs& in) {
   return std::sqrt(sum / 7.0);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
   std::uint64_t seed = 61;
+  int seeds = 1;
   int laps = 0;
   bool leave_one_out = false;
   std::string combine, only_estimator;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string a = argv[i];
-    if (a == "--preset")
-      preset = argv[i + 1];
-    else if (a == "--seed")
-      seed = std::stoull(argv[i + 1]);
-    else if (a == "--laps")
-      laps = std::stoi(argv[i + 1]);
-    else if (a == "--leave-one-out")
-      leave_one_out = std::stoi(argv[i + 1]) != 0;
-    else if (a == "--combine")
-      combine = argv[i + 1];
-    else if (a == "--estimator")
-      only_estimator = argv[i + 1];
-    else {
-      std::cerr << "unknown option " << a << "\n";
-      return 2;
-    }
-  }
-  giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(preset);
-  if (laps > 0) cfg.segments.resize(std::min<size_t>(cfg.segments.size(), 2 + 4 * laps));
+};
+
+struct Row {
+  std::string name, est, said;
+  double score = NAN, clean_score = NAN, nees = NAN;
+};
+
+/// The cases of one seed: the clean drive, each fault, wheel slip, all of them, and what the
+/// options ask for besides.
+std::vector<std::pair<std::string, CalibrationInputs>> casesOf(const Options& o,
+                                                               std::uint64_t seed) {
+  giocal::sim::SimConfig cfg = giocal::sim::readSimConfig(o.preset);
+  if (o.laps > 0) cfg.segments.resize(std::min<size_t>(cfg.segments.size(), 2 + 4 * o.laps));
   const std::string work =
       std::filesystem::temp_directory_path() / ("giocal_faults_" + std::to_string(::getpid()));
   const auto load = [&](const giocal::sim::SimConfig& c) {
@@ -214,11 +207,11 @@ int main(int argc, char** argv) {
   slipping.odometer.slip_rate_per_min = 2.0;  // wheel-slip bursts: 0.5 s at 1.3x, 2 a minute
   std::vector<std::pair<std::string, CalibrationInputs>> cases{{"clean", clean}};
   std::mt19937_64 rng(seed);
-  if (!combine.empty()) {
+  if (!o.combine.empty()) {
     std::vector<std::string> names;
-    for (size_t a = 0, b; a <= combine.size(); a = b + 1) {
-      b = std::min(combine.find(',', a), combine.size());
-      names.push_back(combine.substr(a, b - a));
+    for (size_t a = 0, b; a <= o.combine.size(); a = b + 1) {
+      b = std::min(o.combine.find(',', a), o.combine.size());
+      names.push_back(o.combine.substr(a, b - a));
     }
     const auto named = [&](const std::string& fault) {
       return std::any_of(names.begin(), names.end(),
@@ -227,21 +220,20 @@ int main(int argc, char** argv) {
     CalibrationInputs c = named("wheel slip") ? load(slipping) : clean;
     for (const Named& f : faults())
       if (named(f.name)) f.apply(c, rng);
-    cases = {{"clean", clean}, {combine, c}};
+    cases.push_back({o.combine, c});
+    return cases;
   }
-  for (const Named& f : combine.empty() ? faults() : std::vector<Named>{}) {
+  for (const Named& f : faults()) {
     CalibrationInputs in = clean;
     f.apply(in, rng);
     cases.push_back({f.name, in});
   }
-  if (combine.empty()) {
-    cases.push_back({"wheel-slip bursts 2/min", load(slipping)});
-    CalibrationInputs all = cases.back().second;
-    for (const Named& f : faults()) f.apply(all, rng);
-    cases.push_back({"all of the above", all});
-  }
-  if (leave_one_out && combine.empty()) {
-    const CalibrationInputs slip_data = load(slipping);
+  cases.push_back({"wheel-slip bursts 2/min", load(slipping)});
+  const CalibrationInputs slip_data = cases.back().second;
+  CalibrationInputs all = slip_data;
+  for (const Named& f : faults()) f.apply(all, rng);
+  cases.push_back({"all of the above", all});
+  if (o.leave_one_out) {
     const std::vector<Named> each = faults();
     for (size_t skip = 0; skip <= each.size(); ++skip) {
       const bool skip_slip = skip == each.size();
@@ -252,33 +244,111 @@ int main(int argc, char** argv) {
       cases.push_back({"all but " + (skip_slip ? std::string("wheel slip") : each[skip].name), c});
     }
   }
+  return cases;
+}
 
-  std::printf("preset %s, seed %llu, %.0f s of data\n", preset.c_str(),
-              static_cast<unsigned long long>(seed), clean.dataDuration());
-  std::printf("%-34s %-4s %9s %8s  %s\n", "fault", "est", "err/clean", "NEES7",
-              "what the run said beyond the clean run's (status, warnings, counters)");
+/// Calibrates each case with each estimator; with one seed, prints each row as it comes.
+std::vector<Row> runSeed(const Options& o, std::uint64_t seed) {
+  const auto cases = casesOf(o, seed);
+  const bool print = o.seeds == 1;
+  if (print) {
+    std::printf("preset %s, seed %llu, %.0f s of data\n", o.preset.c_str(),
+                static_cast<unsigned long long>(seed), cases.front().second.dataDuration());
+    std::printf("%-34s %-4s %9s %8s  %s\n", "fault", "est", "err/clean", "NEES7",
+                "what the run said beyond the clean run's (status, warnings, counters)");
+  }
+  std::vector<Row> rows;
   for (const std::string est : {"ekf", "fgo"}) {
-    if (!only_estimator.empty() && est != only_estimator) continue;
+    if (!o.only_estimator.empty() && est != o.only_estimator) continue;
     double clean_score = NAN;
     giocal::CalibrationRun clean_run;
     for (const auto& [name, in] : cases) {
-      std::string said;
-      double s = NAN, nees = NAN;
+      Row row{name, est, "", NAN, NAN, NAN};
       try {
         const giocal::CalibrationRun run = giocal::replayInputs(in, {est, {}, {}}, nullptr);
-        s = score(run, in);
-        nees = giocal::calibrationError(run.final(), in.truth->calib).nees7;
+        row.score = score(run, in);
+        row.nees = giocal::calibrationError(run.final(), in.truth->calib).nees7;
         if (name == "clean") clean_run = run;
-        said = newSayings(run, clean_run);
+        row.said = newSayings(run, clean_run);
       } catch (const std::exception& e) {
-        said = std::string("FAILED: ") + e.what();
+        row.said = std::string("FAILED: ") + e.what();
       }
-      if (name == "clean") clean_score = s;
-      if (said.size() > 160) said = said.substr(0, 157) + "...";
-      std::printf("%-34s %-4s %9.2f %8.2f  %s\n", name.c_str(), est.c_str(), s / clean_score, nees,
-                  said.c_str());
-      std::fflush(stdout);
+      if (name == "clean") clean_score = row.score;
+      row.clean_score = clean_score;
+      if (row.said.size() > 160) row.said = row.said.substr(0, 157) + "...";
+      if (print) {
+        std::printf("%-34s %-4s %9.2f %8.2f  %s\n", name.c_str(), est.c_str(),
+                    row.score / clean_score, row.nees, row.said.c_str());
+        std::fflush(stdout);
+      }
+      rows.push_back(row);
     }
+  }
+  return rows;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string a = argv[i];
+    if (a == "--preset")
+      o.preset = argv[i + 1];
+    else if (a == "--seed")
+      o.seed = std::stoull(argv[i + 1]);
+    else if (a == "--seeds")
+      o.seeds = std::max(1, std::stoi(argv[i + 1]));
+    else if (a == "--laps")
+      o.laps = std::stoi(argv[i + 1]);
+    else if (a == "--leave-one-out")
+      o.leave_one_out = std::stoi(argv[i + 1]) != 0;
+    else if (a == "--combine")
+      o.combine = argv[i + 1];
+    else if (a == "--estimator")
+      o.only_estimator = argv[i + 1];
+    else {
+      std::cerr << "unknown option " << a << "\n";
+      return 2;
+    }
+  }
+  if (o.seeds == 1) {
+    runSeed(o, o.seed);
+    return 0;
+  }
+  // Over seeds: one seed's clean error can be small by luck, and its ratios then large by luck.
+  std::vector<Row> all;
+  for (int k = 0; k < o.seeds; ++k) {
+    const std::vector<Row> rows = runSeed(o, o.seed + static_cast<std::uint64_t>(k));
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  std::printf("preset %s, seeds %llu-%llu\n", o.preset.c_str(),
+              static_cast<unsigned long long>(o.seed),
+              static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.seeds) - 1));
+  std::printf("%-34s %-4s %9s %9s %8s %8s  %s\n", "fault", "est", "RMS ratio", "max ratio", "NEES7",
+              "failed", "runs that said something beyond the clean run's");
+  std::vector<std::pair<std::string, std::string>> order;
+  for (const Row& r : all)
+    if (std::find(order.begin(), order.end(), std::make_pair(r.name, r.est)) == order.end())
+      order.push_back({r.name, r.est});
+  for (const auto& [name, est] : order) {
+    double s2 = 0.0, c2 = 0.0, worst = 0.0, nees = 0.0;
+    int n = 0, failed = 0, said = 0;
+    for (const Row& r : all) {
+      if (r.name != name || r.est != est) continue;
+      ++n;
+      said += r.said != "-";
+      if (!std::isfinite(r.score)) {
+        ++failed;
+        continue;
+      }
+      s2 += r.score * r.score;
+      c2 += r.clean_score * r.clean_score;
+      worst = std::max(worst, r.score / r.clean_score);
+      nees += r.nees;
+    }
+    std::printf("%-34s %-4s %9.2f %9.2f %8.2f %8d  %d of %d\n", name.c_str(), est.c_str(),
+                std::sqrt(s2 / c2), worst, nees / std::max(1, n - failed), failed, said, n);
   }
   return 0;
 }

@@ -28,9 +28,8 @@ PredictedResidual predictedResidual(const SlidingWindow& window, const Factor& f
     c += J[blocks[i]].cols();
   }
   const Eigen::MatrixXd Jw = S * Jf;
-  const Eigen::MatrixXd A = names.empty()
-                                ? Eigen::MatrixXd::Zero(r.size(), r.size())
-                                : Eigen::MatrixXd(Jw * window.covariance(names) * Jw.transpose());
+  const Eigen::MatrixXd A = names.empty() ? Eigen::MatrixXd::Zero(r.size(), r.size())
+                                          : window.covarianceAlong(names, Jw.transpose());
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(
       Eigen::MatrixXd::Identity(r.size(), r.size()) - 0.5 * (A + A.transpose()));
   PredictedResidual out;

@@ -82,6 +82,10 @@ class SlidingWindow {
   /// components keep their factors' information). The factorization is kept until the window
   /// changes: the covariances asked for at one state, and after a Gauss-Newton solve, share it.
   Eigen::MatrixXd covariance(const std::vector<StateKey>& names) const;
+  /// G^T C G with C = covariance(names): one triangular solve with G's columns, cheaper than C
+  /// when G has fewer columns than `names` have tangent dimensions.
+  Eigen::MatrixXd covarianceAlong(const std::vector<StateKey>& names,
+                                  const Eigen::MatrixXd& G) const;
 
   /// Removes `names` and the factors on them, leaving one linear prior on their neighbours.
   void marginalize(const std::vector<StateKey>& names);

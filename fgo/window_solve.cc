@@ -70,22 +70,27 @@ struct SlidingWindow::Linearization {
     }
     return Y;
   }
-  /// The covariance of the tangent indices `idx`: with H = P^T L L^T P it is Y^T Y, Y = L^-1 P E
-  /// (E their unit columns), one triangular solve where H^-1 E takes two.
-  Eigen::MatrixXd marginal(const std::vector<int>& idx) {
+  /// G^T C G, C the covariance of the tangent indices `idx` (G null: C itself): with
+  /// H = P^T L L^T P it is Y^T Y, Y = L^-1 P E G (E their unit columns), one triangular solve with
+  /// G's columns where H^-1 E takes two with idx's.
+  Eigen::MatrixXd marginal(const std::vector<int>& idx, const Eigen::MatrixXd* G = nullptr) {
     factorize();
     const auto n = static_cast<long>(H.rows()), k = static_cast<long>(idx.size());
+    const long m = G ? G->cols() : k;
     SimplicialLlt& llt = plan->symbolic->llt;
     if (plan->symbolic->ok) {
       cholmod_common& cm = llt.cholmod();
-      cholmod_dense* E = cholmod_zeros(n, k, CHOLMOD_REAL, &cm);
-      for (long j = 0; E && j < k; ++j) static_cast<double*>(E->x)[j * n + idx[j]] = 1.0;
+      cholmod_dense* E = cholmod_zeros(n, m, CHOLMOD_REAL, &cm);
+      for (long j = 0; E && j < k; ++j) {
+        for (long c = 0; c < m; ++c)
+          static_cast<double*>(E->x)[c * n + idx[j]] = G ? (*G)(j, c) : double(c == j);
+      }
       cholmod_dense* PE = E ? cholmod_solve(CHOLMOD_P, llt.factor(), E, &cm) : nullptr;
       cholmod_dense* Y = PE ? cholmod_solve(CHOLMOD_L, llt.factor(), PE, &cm) : nullptr;
       Eigen::MatrixXd C;
       if (Y)
-        C.noalias() = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, k).transpose() *
-                      Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, k);
+        C.noalias() = Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, m).transpose() *
+                      Eigen::Map<Eigen::MatrixXd>(static_cast<double*>(Y->x), n, m);
       cholmod_free_dense(&E, &cm);
       cholmod_free_dense(&PE, &cm);
       cholmod_free_dense(&Y, &cm);
@@ -96,7 +101,8 @@ struct SlidingWindow::Linearization {
     const Eigen::MatrixXd X = solve(E);
     Eigen::MatrixXd C(k, k);
     for (long r = 0; r < k; ++r) C.row(r) = X.row(idx[r]);
-    return 0.5 * (C + C.transpose());
+    C = 0.5 * (C + C.transpose());
+    return G ? Eigen::MatrixXd(G->transpose() * C * *G) : C;
   }
   /// The Gauss-Newton step with the held components at zero: the unconstrained step corrected
   /// along H^-1 E (E the held columns), so that one factorization of the whole H serves the
@@ -294,6 +300,22 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<StateKey>& names) co
     for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
   }
   return f.marginal(idx);
+}
+
+Eigen::MatrixXd SlidingWindow::covarianceAlong(const std::vector<StateKey>& names,
+                                               const Eigen::MatrixXd& G) const {
+  Linearization& f = factorization();
+  std::vector<int> idx;
+  for (const StateKey& name : names) {
+    const auto it = f.plan->offset.find(name);
+    if (it == f.plan->offset.end())
+      throw std::out_of_range("no estimated window variable '" + name.str() + "'");
+    for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
+  }
+  if (static_cast<long>(idx.size()) != G.rows())
+    throw std::invalid_argument("covarianceAlong: G has " + std::to_string(G.rows()) +
+                                " rows for " + std::to_string(idx.size()) + " tangent dimensions");
+  return f.marginal(idx, &G);
 }
 
 SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double function_tolerance) {

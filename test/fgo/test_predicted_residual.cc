@@ -59,5 +59,15 @@ TEST(PredictedResidual, AFactorThatAloneDecidesItsVariableIsNotTested) {
   EXPECT_EQ(got.chi2, 0.0);
 }
 
+TEST(PredictedResidual, TheCovarianceAlongColumnsIsTheirQuadraticForm) {
+  SlidingWindow w = chain(true);
+  ASSERT_TRUE(w.solve(50, 1e-14).usable);
+  Eigen::MatrixXd G(6, 2);
+  G << 1, 0, 2, -1, 0, 3, 0.5, 0, -1, 1, 0, 2;
+  const Eigen::MatrixXd C = w.covariance({x(2), x(0)});
+  EXPECT_LT((w.covarianceAlong({x(2), x(0)}, G) - G.transpose() * C * G).norm(), 1e-12);
+  EXPECT_THROW(w.covarianceAlong({x(2)}, G), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace giocal
