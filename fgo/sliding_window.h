@@ -130,6 +130,8 @@ class SlidingWindow {
   void forEachWhitenedFactor(const std::vector<FactorLayout>& factors, const FactorVisitor& visit,
                              Eigen::VectorXd* b, bool robust = false, double* cost = nullptr) const;
   SolveReport solveWithCeres(int max_iterations, double function_tolerance);
+  /// G^T C G of the tangent of `names` (G null: C).
+  Eigen::MatrixXd marginalOf(const std::vector<StateKey>& names, const Eigen::MatrixXd* G) const;
   SolveReport solveGaussNewton(int max_iterations, double function_tolerance);
 
   std::map<StateKey, Variable> vars_;

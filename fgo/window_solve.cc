@@ -290,7 +290,8 @@ SlidingWindow::Linearization& SlidingWindow::factorization() const {
   return *linearization_;
 }
 
-Eigen::MatrixXd SlidingWindow::covariance(const std::vector<StateKey>& names) const {
+Eigen::MatrixXd SlidingWindow::marginalOf(const std::vector<StateKey>& names,
+                                          const Eigen::MatrixXd* G) const {
   Linearization& f = factorization();  // (mutable: factorized on first use)
   std::vector<int> idx;
   for (const StateKey& name : names) {
@@ -299,23 +300,19 @@ Eigen::MatrixXd SlidingWindow::covariance(const std::vector<StateKey>& names) co
       throw std::out_of_range("no estimated window variable '" + name.str() + "'");
     for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
   }
-  return f.marginal(idx);
+  if (G && static_cast<long>(idx.size()) != G->rows())
+    throw std::invalid_argument("covarianceAlong: G has " + std::to_string(G->rows()) +
+                                " rows for " + std::to_string(idx.size()) + " tangent dimensions");
+  return f.marginal(idx, G);
+}
+
+Eigen::MatrixXd SlidingWindow::covariance(const std::vector<StateKey>& names) const {
+  return marginalOf(names, nullptr);
 }
 
 Eigen::MatrixXd SlidingWindow::covarianceAlong(const std::vector<StateKey>& names,
                                                const Eigen::MatrixXd& G) const {
-  Linearization& f = factorization();
-  std::vector<int> idx;
-  for (const StateKey& name : names) {
-    const auto it = f.plan->offset.find(name);
-    if (it == f.plan->offset.end())
-      throw std::out_of_range("no estimated window variable '" + name.str() + "'");
-    for (int k = 0; k < vars_.at(name).block.tangentSize(); ++k) idx.push_back(it->second + k);
-  }
-  if (static_cast<long>(idx.size()) != G.rows())
-    throw std::invalid_argument("covarianceAlong: G has " + std::to_string(G.rows()) +
-                                " rows for " + std::to_string(idx.size()) + " tangent dimensions");
-  return f.marginal(idx, &G);
+  return marginalOf(names, &G);
 }
 
 SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double function_tolerance) {
