@@ -44,8 +44,9 @@ bool turnBeyondNoise(const Vec3& turn_b, const Vec3& up_b, double yaw_sigma, dou
 /// The longest time between two readings over [t0, t1]: between two samples that bracket part of
 /// it, from t0 to the first sample when none is at or before t0, from the last to t1 when none is
 /// at or after t1 (where integrateSamples interpolates or holds). Samples in time order. A stretch
-/// longer than calibration.max_odometer_gap_s is a gap the odometer did not measure: both
-/// estimators leave such an interval to the IMU instead of integrating a guess through it.
+/// longer than calibration.max_odometer_gap_s is a gap the odometer did not measure: the factor
+/// graph gives such an interval no odometer factor, as the EKF restarts its interval at a gap
+/// between consecutive samples (CalibrationFilter::updateOdometer); the IMU carries both across.
 double longestOdometerGap(const std::vector<OdomSample>& samples, double t0, double t1);
 
 /// Residual [r_p (3), r_theta (3)] in m_k with Jacobians with respect to the right-perturbed
