@@ -1,7 +1,8 @@
 // How a robot's driver code feeds giocal's online calibrator: each sensor callback pushes its
-// sample as it arrives (in any interleaving; the calibrator puts them back in time order), and a
-// 1 Hz timer reads the calibration, its sigma and the health. Here the "drivers" are played from
-// a dataset folder: robot_driver_example <dataset dir> [ekf|fgo]
+// sample as it arrives (in any interleaving; the calibrator puts them back in time order and moves
+// each sensor's stamps by the description's time_offsets), and a timer (here every 10 s of data)
+// reads the calibration, its sigma and the health. Here the "drivers" are played from a dataset
+// folder: robot_driver_example <dataset dir> [ekf|fgo]
 #include <cstdio>
 #include <string>
 
@@ -16,24 +17,26 @@ class CalibrationNode {
  public:
   CalibrationNode(const std::string& estimator, const DatasetDescription& robot,
                   const Eigen::Vector3d& base_ecef)
-      : calibrator_(makeCalibrator(estimator, robot, base_ecef, CalibrationOptions{},
-                                   FgoOptions{}, nullptr)) {}
+      : calibrator_(makeCalibrator(estimator, robot, base_ecef, CalibrationOptions{}, FgoOptions{},
+                                   nullptr)) {}
 
   void onImu(const ImuSample& s) { calibrator_->addImu(s); }
   void onWheelOdometry(const OdomSample& s) { calibrator_->addOdometer(s); }
   void onRoverEpoch(const ObsEpoch& e) { calibrator_->addRover(e); }
   void onBaseEpoch(const ObsEpoch& e) { calibrator_->addBase(e); }
   void onEphemeris(const Ephemeris& e) { calibrator_->addEphemeris(e); }
+  /// A whole navigation file: its ephemerides and the ionosphere parameters of its header.
+  void onNavigation(const NavData& nav) { calibrator_->addNavigation(nav); }
 
-  void onTimer() {  // e.g. publish the calibration once a second
+  void onTimer() {  // e.g. publish the calibration
     const CalibratorHealth h = calibrator_->health();
     const auto c = calibrator_->calibration();
     std::printf("t=%.0f %-12s", h.t_data, stateName(h.state));
     if (c) {
       const auto sd = c->sigma();
       std::printf(" s_v %+.4f (%.4f)  s_w %+.4f (%.4f)  p_b_m %+.3f %+.3f m (%.3f %.3f)",
-                  c->calib.s_v, sd[0], c->calib.s_w, sd[1], c->calib.p_b_m.x(),
-                  c->calib.p_b_m.y(), sd[2], sd[3]);
+                  c->calib.s_v, sd[0], c->calib.s_w, sd[1], c->calib.p_b_m.x(), c->calib.p_b_m.y(),
+                  sd[2], sd[3]);
     }
     std::printf("  converged %zu, buffered %zu\n", h.converged.size(), h.buffered_samples);
   }
@@ -53,10 +56,15 @@ int main(int argc, char** argv) {
     RinexObsReader rover(d.pathOf(d.rover_obs)), base(d.pathOf(d.base_obs));
     const Eigen::Vector3d base_e =
         d.base_position_ecef ? *d.base_position_ecef : base.header().approx_position;
-    CalibrationNode node(argc > 2 ? argv[2] : "ekf", d, base_e);
-    for (const std::string& n : d.nav) {
-      for (const Ephemeris& e : readRinexNav(d.pathOf(n)).ephemerides) node.onEphemeris(e);
+    if (base_e.norm() < 6.0e6) {  // not on the Earth's surface: no position in the header
+      std::fprintf(stderr,
+                   "robot_driver_example: %s has no APPROX POSITION XYZ; give "
+                   "gnss.base_position_ecef in dataset.yaml\n",
+                   d.pathOf(d.base_obs).c_str());
+      return 1;
     }
+    CalibrationNode node(argc > 2 ? argv[2] : "ekf", d, base_e);
+    for (const std::string& n : d.nav) node.onNavigation(readRinexNav(d.pathOf(n)));
     // The drivers: the IMU drives the clock; the GNSS epochs arrive a little after their time.
     ImuLogReader imu(d.pathOf(d.imu));
     OdomLogReader odom(d.pathOf(d.odom));

@@ -312,7 +312,7 @@ void SlidingWindow::linearize(const std::vector<StateKey>& order,
           }
         }
       },
-      &b);
+      &b, /*robust=*/true);  // the weights of the solve: a down-weighted outlier stays so
 }
 
 void SlidingWindow::marginalize(const std::vector<StateKey>& names) {

@@ -73,7 +73,8 @@ class SlidingWindow {
   SolveReport solve(int max_iterations, double function_tolerance = 1e-6);
 
   /// Whitened Gauss-Newton system over `order` (tangent, in that order) from `factors` at the
-  /// current values: H = sum J^T J, b = sum J^T r. Factors' other variables are ignored.
+  /// current values: H = sum J^T J, b = sum J^T r, with the solve's robust (Huber) weights.
+  /// Factors' other variables are ignored.
   void linearize(const std::vector<StateKey>& order, const std::vector<const Factor*>& factors,
                  Eigen::MatrixXd& H, Eigen::VectorXd& b) const;
   /// The estimated variables that have factors, in a fixed order.

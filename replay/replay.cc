@@ -39,16 +39,16 @@ void merge(std::vector<Stream>& streams, const StopRequest* stop) {
   }
 }
 
-/// A stream over a reader with bool next(T&), its times moved by `offset` (dataset.yaml's
-/// time_offsets) before they are ordered.
+/// A stream over a reader with bool next(T&), ordered by its times moved by `offset`
+/// (dataset.yaml's time_offsets); the items go to the calibrator as read, which applies the offsets
+/// itself.
 template <class Reader, class T>
 Stream readerStream(std::shared_ptr<Reader> reader, std::function<void(const T&)> push,
                     double offset = 0.0) {
   auto held = std::make_shared<T>();
   const auto next = [reader, held, offset]() -> double {
     if (!reader->next(*held)) return INFINITY;
-    held->t += offset;
-    return held->t;
+    return held->t + offset;
   };
   Stream s;
   s.t = next();
@@ -59,15 +59,16 @@ Stream readerStream(std::shared_ptr<Reader> reader, std::function<void(const T&)
   return s;
 }
 
-/// A stream over a vector.
+/// A stream over a vector, ordered by its times moved by `offset`.
 template <class T>
-Stream vectorStream(const std::vector<T>& v, std::function<void(const T&)> push) {
+Stream vectorStream(const std::vector<T>& v, std::function<void(const T&)> push,
+                    double offset = 0.0) {
   Stream s;
   auto k = std::make_shared<size_t>(0);
-  s.t = v.empty() ? INFINITY : v.front().t;
-  s.step = [&v, k, push]() {
+  s.t = v.empty() ? INFINITY : v.front().t + offset;
+  s.step = [&v, k, push, offset]() {
     push(v[(*k)++]);
-    return *k < v.size() ? v[*k].t : INFINITY;
+    return *k < v.size() ? v[*k].t + offset : INFINITY;
   };
   return s;
 }
@@ -126,7 +127,6 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
   if (!job.positions.empty()) {
     positions = readPosFile(job.positions);
     if (positions.empty()) throw DataError(job.positions, 0, "no position solutions");
-    for (PositionFix& p : positions) p.t += d.time_offsets.positions;
   }
   std::vector<NavData> navs;
   for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
@@ -148,8 +148,8 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
         readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
   }
   if (!positions.empty()) {
-    streams.push_back(
-        vectorStream<PositionFix>(positions, [&c](const PositionFix& p) { c.addPosition(p); }));
+    streams.push_back(vectorStream<PositionFix>(
+        positions, [&c](const PositionFix& p) { c.addPosition(p); }, d.time_offsets.positions));
   }
   merge(streams, job.stop);
   if (streams[0].count < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
@@ -194,10 +194,18 @@ CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, R
       makeCalibrator(job.estimator, in.description, in.base_e, job.options, job.fgo_options, sink);
   cal->addNavigation(in.nav);
   Calibrator& c = *cal;
+  // The inputs' times have dataset.yaml's time_offsets applied (loadCalibrationInputs); the
+  // calibrator applies them itself, so it gets the times as the logs wrote them.
+  const TimeOffsets& off = in.description.time_offsets;
   std::vector<Stream> streams;
-  streams.push_back(vectorStream<ImuSample>(in.imu, [&c](const ImuSample& s) { c.addImu(s); }));
-  streams.push_back(
-      vectorStream<OdomSample>(in.odom, [&c](const OdomSample& s) { c.addOdometer(s); }));
+  streams.push_back(vectorStream<ImuSample>(in.imu, [&c, &off](ImuSample s) {
+    s.t -= off.imu;
+    c.addImu(s);
+  }));
+  streams.push_back(vectorStream<OdomSample>(in.odom, [&c, &off](OdomSample s) {
+    s.t -= off.odometer;
+    c.addOdometer(s);
+  }));
   // Without raw GNSS the calibrator makes the epochs from the positions; inputs loaded with a
   // .pos carry the same epochs (loadCalibrationInputs), which would arrive twice.
   if (!in.description.rover_obs.empty()) {
@@ -206,8 +214,10 @@ CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, R
   }
   streams.push_back(
       vectorStream<ObsEpoch>(in.base.epochs, [&c](const ObsEpoch& e) { c.addBase(e); }));
-  streams.push_back(
-      vectorStream<PositionFix>(in.positions, [&c](const PositionFix& p) { c.addPosition(p); }));
+  streams.push_back(vectorStream<PositionFix>(in.positions, [&c, &off](PositionFix p) {
+    p.t -= off.positions;
+    c.addPosition(p);
+  }));
   merge(streams, job.stop);
   c.finish();
   return c.run();

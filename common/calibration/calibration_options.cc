@@ -71,6 +71,7 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   const std::string n = "online.";
   OnlineOptions& on = o.online;
   on.reorder_lag_s = y.numberOr(n + "reorder_lag_s", on.reorder_lag_s, 0.0, 60.0);
+  on.max_lead_s = y.numberOr(n + "max_lead_s", on.max_lead_s, 0.01, 1e6);
   on.max_imu_wait_s = y.numberOr(n + "max_imu_wait_s", on.max_imu_wait_s, 0.1, 600.0);
   on.max_init_window_s = y.numberOr(n + "max_init_window_s", on.max_init_window_s, 10.0, 1e5);
   on.progress_interval_s = y.numberOr(n + "progress_interval_s", on.progress_interval_s, 1.0, 1e6);

@@ -34,6 +34,11 @@ struct OnlineOptions {
   // Data are put back in time order across sensors within this lag behind the newest datum;
   // anything older on arrival is counted and dropped [s].
   double reorder_lag_s = 0.5;
+  // A datum more than this ahead of every datum received so far waits for its own sensor's next
+  // one: if that one goes on from it, the sensor really jumped (a gap); if it goes back, the stamp
+  // was a glitch (a GPS week rollover, say), and the datum is counted and dropped instead of
+  // moving the reorder frontier into the future [s].
+  double max_lead_s = 2.0;
   // Odometer and GNSS events wait this long (data time) for IMU samples past them; then, the IMU
   // being silent, they are dropped with a warning [s].
   double max_imu_wait_s = 2.0;

@@ -32,6 +32,8 @@ const char* counterName(Counter c) {
       return "imu_restarts";
     case Counter::kLateSamples:
       return "late_samples_dropped";
+    case Counter::kFutureSamples:
+      return "future_samples_dropped";
     case Counter::kDuplicateSamples:
       return "duplicate_samples_dropped";
     case Counter::kNonFiniteSamples:

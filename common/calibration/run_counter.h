@@ -18,6 +18,7 @@ enum class Counter {
   kImuGaps,              // IMU intervals longer than max_imu_gap_s
   kImuRestarts,          // of those, longer than max_imu_bridge_s: navigation restarted
   kLateSamples,          // data older than the reorder buffer's lag: dropped
+  kFutureSamples,        // a datum far ahead of all data whose own stream went back: dropped
   kDuplicateSamples,     // a sample with the time of the previous one of its sensor: dropped
   kNonFiniteSamples,     // NaN or infinite values: dropped
   kDroppedWithoutImu,    // odometer and GNSS data dropped while the IMU was silent

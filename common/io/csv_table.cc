@@ -83,74 +83,111 @@ bool CsvRowReader::nextFields(std::vector<std::string_view>& fields) {
   return false;
 }
 
-bool CsvRowReader::next(std::vector<double>& row) {
-  while (true) {
-    std::vector<std::string_view>& fields = fields_;
-    if (!nextFields(fields)) return false;
-    if (fields.size() != header_.size()) {
-      // A last line cut short by an interrupted recording is damage; elsewhere it is structure.
-      const size_t found = fields.size();
-      std::vector<std::string_view> after;
-      const long line = line_no_;
-      if (fields.size() < header_.size() && !nextFields(after)) {
-        ++damage_.cut_last_line;
-        damage_.cut_line = line;
-        return false;
-      }
-      throw DataError(path_, line,
-                      "expected " + std::to_string(header_.size()) + " columns, found " +
-                          std::to_string(found));  // (reading `after` replaced the line)
+CsvRowReader::RowKind CsvRowReader::readRow(std::vector<double>& row) {
+  std::vector<std::string_view>& fields = fields_;
+  if (!nextFields(fields)) return RowKind::kEnd;
+  if (fields.size() != header_.size()) {
+    // A last line cut short by an interrupted recording is damage; elsewhere it is structure.
+    const size_t found = fields.size();
+    std::vector<std::string_view> after;
+    const long line = line_no_;
+    if (fields.size() < header_.size() && !nextFields(after)) {
+      ++damage_.cut_last_line;
+      damage_.cut_line = line;
+      return RowKind::kEnd;
     }
-    row.assign(fields.size(), 0.0);
-    bool finite = true;
-    for (size_t i = 0; i < fields.size(); ++i) {
-      const std::string_view f = fields[i];
-      double v = 0.0;
-      if (!parseNumber(f, v)) {
-        throw DataError(path_, line_no_,
-                        "column '" + header_[i] + "' is not a number: '" + std::string(f) + "'");
-      }
-      if (!std::isfinite(v)) {
-        if (i == 0) {
-          throw DataError(path_, line_no_, "time is not finite: '" + std::string(f) + "'");
-        }
-        finite = false;
-        continue;
-      }
-      if (i < ranges_.size() && (v < ranges_[i].min || v > ranges_[i].max)) {
-        std::ostringstream msg;
-        msg << "column '" << header_[i] << "' value " << v << " outside the physical range ["
-            << ranges_[i].min << ", " << ranges_[i].max << "]";
-        throw DataError(path_, line_no_, msg.str());
-      }
-      row[i] = v;
+    throw DataError(path_, line,
+                    "expected " + std::to_string(header_.size()) + " columns, found " +
+                        std::to_string(found));  // (reading `after` replaced the line)
+  }
+  row.assign(fields.size(), 0.0);
+  bool finite = true;
+  for (size_t i = 0; i < fields.size(); ++i) {
+    const std::string_view f = fields[i];
+    double v = 0.0;
+    if (!parseNumber(f, v)) {
+      throw DataError(path_, line_no_,
+                      "column '" + header_[i] + "' is not a number: '" + std::string(f) + "'");
     }
-    long* count = nullptr;
-    long* first = nullptr;
-    if (!finite) {
-      count = &damage_.non_finite;
-      first = &damage_.first_non_finite;
-    } else if (have_prev_ && row[0] == prev_t_) {
-      count = &damage_.duplicated;
-      first = &damage_.first_duplicated;
-    } else if (have_prev_ && row[0] < prev_t_) {
-      count = &damage_.out_of_order;
-      first = &damage_.first_out_of_order;
-    }
-    if (count) {
-      if (*count == 0) *first = line_no_;
-      ++*count;
-      if (++bad_run_ > CsvDamage::kMaxBadRun) {
-        throw DataError(path_, line_no_,
-                        std::to_string(bad_run_) +
-                            " rows in a row with NaN, a repeated time or time going backwards "
-                            "(not a single damaged row: a broken log or a clock jump)");
+    if (!std::isfinite(v)) {
+      if (i == 0) {
+        throw DataError(path_, line_no_, "time is not finite: '" + std::string(f) + "'");
       }
+      finite = false;
       continue;
     }
+    if (i < ranges_.size() && (v < ranges_[i].min || v > ranges_[i].max)) {
+      std::ostringstream msg;
+      msg << "column '" << header_[i] << "' value " << v << " outside the physical range ["
+          << ranges_[i].min << ", " << ranges_[i].max << "]";
+      throw DataError(path_, line_no_, msg.str());
+    }
+    row[i] = v;
+  }
+  return finite ? RowKind::kRow : RowKind::kNonFinite;
+}
+
+void CsvRowReader::drop(long& count, long& first, long line) {
+  if (count == 0) first = line;
+  ++count;
+  if (++bad_run_ > CsvDamage::kMaxBadRun) {
+    throw DataError(path_, line_no_,
+                    std::to_string(bad_run_) +
+                        " rows in a row with NaN, a repeated time or time going backwards "
+                        "(not a single damaged row: a broken log or a clock jump)");
+  }
+}
+
+bool CsvRowReader::next(std::vector<double>& row) {
+  // One row is held back until the next is read: a row whose time jumps far ahead of both
+  // neighbours (one glitched stamp, a GPS week rollover) is told apart from the rows after it.
+  while (true) {
+    const RowKind kind = readRow(candidate_);
+    if (kind == RowKind::kEnd) {
+      if (!held_) return false;
+      held_ = false;
+      row.swap(held_row_);
+      returned_line_ = held_line_;
+      have_prev_ = true;
+      prev_t_ = row[0];
+      return true;
+    }
+    if (kind == RowKind::kNonFinite) {
+      drop(damage_.non_finite, damage_.first_non_finite, line_no_);
+      continue;
+    }
+    const double t = candidate_[0];
+    const double ref = held_ ? held_row_[0] : prev_t_;
+    const bool have_ref = held_ || have_prev_;
+    if (have_ref && t == ref) {
+      drop(damage_.duplicated, damage_.first_duplicated, line_no_);
+      continue;
+    }
+    if (have_ref && t < ref) {
+      // The held row far ahead of the row before it and of this one, which goes on from the row
+      // before it: the held row is the odd one out. Otherwise this row went back in time.
+      const bool held_jumped = held_ && have_prev_ && t > prev_t_ && ref - t > t - prev_t_;
+      if (!held_jumped) {
+        drop(damage_.out_of_order, damage_.first_out_of_order, line_no_);
+        continue;
+      }
+      drop(damage_.jumped_ahead, damage_.first_jumped_ahead, held_line_);
+      held_ = false;
+    }
     bad_run_ = 0;
+    const long line = line_no_;
+    if (!held_) {
+      held_row_.swap(candidate_);
+      held_line_ = line;
+      held_ = true;
+      continue;
+    }
+    row.swap(held_row_);
+    returned_line_ = held_line_;
     have_prev_ = true;
     prev_t_ = row[0];
+    held_row_.swap(candidate_);
+    held_line_ = line;
     return true;
   }
 }
@@ -166,6 +203,8 @@ std::vector<std::string> CsvRowReader::warnings() const {
   add(damage_.non_finite, damage_.first_non_finite, "rows with NaN or infinite values");
   add(damage_.duplicated, damage_.first_duplicated, "rows repeating the previous time");
   add(damage_.out_of_order, damage_.first_out_of_order, "rows with time going backwards");
+  add(damage_.jumped_ahead, damage_.first_jumped_ahead,
+      "rows stamped far ahead of the rows before and after them");
   add(damage_.cut_last_line, damage_.cut_line, "last line cut short");
   return out;
 }

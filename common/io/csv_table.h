@@ -24,12 +24,14 @@ struct CsvTable {
 };
 
 /// Rows a reader dropped as recoverable damage: a row with NaN or infinite values (up to
-/// kMaxBadRun in a row), a repeated time, a single time out of order, a cut last line. Anything
-/// longer or elsewhere is structural and stops the read.
+/// kMaxBadRun in a row), a repeated time, a single time out of order, a single time far ahead of
+/// the rows around it, a cut last line. Anything longer or elsewhere is structural and stops the
+/// read.
 struct CsvDamage {
   static constexpr int kMaxBadRun = 100;
-  long non_finite = 0, duplicated = 0, out_of_order = 0, cut_last_line = 0;
-  long first_non_finite = 0, first_duplicated = 0, first_out_of_order = 0, cut_line = 0;
+  long non_finite = 0, duplicated = 0, out_of_order = 0, jumped_ahead = 0, cut_last_line = 0;
+  long first_non_finite = 0, first_duplicated = 0, first_out_of_order = 0, first_jumped_ahead = 0,
+       cut_line = 0;
 };
 
 /// Reads a CsvTable row by row (constant memory): the same checks as readCsvTable().
@@ -43,7 +45,7 @@ class CsvRowReader {
   CsvRowReader& operator=(const CsvRowReader&) = delete;
   /// The next row; false at the end of the file. Throws DataError on a bad row.
   bool next(std::vector<double>& row);
-  long line() const { return line_no_; }  // of the row last returned
+  long line() const { return returned_line_; }  // of the row last returned
   const std::string& path() const { return path_; }
   const CsvDamage& damage() const { return damage_; }
   /// One line per kind of damage dropped so far, naming the file and the first line.
@@ -52,6 +54,11 @@ class CsvRowReader {
  private:
   /// The next non-blank, non-comment line's trimmed fields, as views into line_.
   bool nextFields(std::vector<std::string_view>& fields);
+  enum class RowKind { kEnd, kRow, kNonFinite };
+  /// The next row, its columns and ranges checked (not its time order).
+  RowKind readRow(std::vector<double>& row);
+  /// Counts a dropped row; too many in a row stop the read.
+  void drop(long& count, long& first, long line);
   struct Stream;
   std::unique_ptr<Stream> in_;
   std::string path_;
@@ -61,7 +68,10 @@ class CsvRowReader {
   bool have_prev_ = false;
   double prev_t_ = 0.0;
   CsvDamage damage_;
-  int bad_run_ = 0;                       // consecutive rows dropped
+  int bad_run_ = 0;    // consecutive rows dropped
+  bool held_ = false;  // a row read but not returned yet (held_row_)
+  std::vector<double> held_row_, candidate_;
+  long held_line_ = 0, returned_line_ = 0;
   std::string line_;                      // the line last read
   std::vector<std::string_view> fields_;  // its fields (kept: no allocation per row)
 };

@@ -65,8 +65,10 @@ void Calibrator::noted(Counter c, const std::string& what) {
     run_.warn(what + " (further ones are counted in " + counterName(c) + ")");
 }
 
-void Calibrator::addImu(const ImuSample& s) {
+void Calibrator::addImu(const ImuSample& raw) {
   BusyTimer busy(busy_s_);
+  ImuSample s = raw;
+  s.t += dataset_.time_offsets.imu;  // onto GPS time: dataset.yaml's time_offsets, here only
   if (!std::isfinite(s.t) || !s.gyro.allFinite() || !s.acc.allFinite()) {
     dropped(Counter::kNonFiniteSamples, s.t, "IMU sample with NaN or infinite values");
     return;
@@ -74,8 +76,10 @@ void Calibrator::addImu(const ImuSample& s) {
   push(s.t, {Kind::kImu, s, {}, {}, {}});
 }
 
-void Calibrator::addOdometer(const OdomSample& s) {
+void Calibrator::addOdometer(const OdomSample& raw) {
   BusyTimer busy(busy_s_);
+  OdomSample s = raw;
+  s.t += dataset_.time_offsets.odometer;
   // A speed-only odometer's w is not read (NaN is what a driver without one sends).
   const bool w_ok = std::isfinite(s.w) || !dataset_.odom_noise.measures_yaw_rate;
   if (!std::isfinite(s.t) || !std::isfinite(s.v) || !w_ok) {
@@ -95,8 +99,10 @@ void Calibrator::addBase(const ObsEpoch& e) {
   push(e.t, {Kind::kBase, {}, {}, e, {}});
 }
 
-void Calibrator::addPosition(const PositionFix& p) {
+void Calibrator::addPosition(const PositionFix& raw) {
   BusyTimer busy(busy_s_);
+  PositionFix p = raw;
+  p.t += dataset_.time_offsets.positions;
   if (!p.p_e.allFinite() || !p.cov_enu.allFinite()) {
     dropped(Counter::kNonFiniteSamples, p.t, "position solution with NaN or infinite values");
     return;
@@ -117,6 +123,27 @@ void Calibrator::push(double t, Datum d) {
     dropped(Counter::kNonFiniteSamples, t, "a datum with a non-finite time");
     return;
   }
+  std::optional<std::pair<double, Datum>>& ahead = ahead_[static_cast<size_t>(d.kind)];
+  if (ahead) {
+    // The held datum's sensor speaks again: on from it, the sensor jumped; back, it was a glitch.
+    std::pair<double, Datum> held = std::move(*ahead);
+    ahead.reset();
+    if (t >= held.first) {
+      admit(held.first, std::move(held.second));
+    } else {
+      dropped(Counter::kFutureSamples, held.first,
+              "a datum stamped " + fixedText(held.first - reorder_.newest(), 1) +
+                  " s ahead of all other data, its sensor's next one back at t=" + timeText(t));
+    }
+  }
+  if (std::isfinite(reorder_.newest()) && t > reorder_.newest() + options_.online.max_lead_s) {
+    ahead.emplace(t, std::move(d));
+    return;
+  }
+  admit(t, std::move(d));
+}
+
+void Calibrator::admit(double t, Datum d) {
   if (std::isnan(t_first_)) t_first_ = t;
   t_first_ = std::min(t_first_, t);
   if (!reorder_.push(t, std::move(d))) {

@@ -4,6 +4,7 @@
 // and hands events to one EstimatorCore (EKF or factor graph); memory stays bounded.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <deque>
 #include <functional>
@@ -55,6 +56,8 @@ class Calibrator {
              const Eigen::Vector3d& base_e, const CalibrationOptions& options, CoreFactory factory,
              RunSink* sink);
 
+  /// IMU, odometer and position times are moved by the dataset's time_offsets here (the one
+  /// place they are applied, for a replay and a robot alike).
   void addImu(const ImuSample& s);
   void addOdometer(const OdomSample& s);
   void addRover(const ObsEpoch& e);
@@ -84,6 +87,8 @@ class Calibrator {
     PositionFix position;
   };
   void push(double t, Datum d);
+  /// Into the reorder buffer (the datum's time is believed).
+  void admit(double t, Datum d);
   void release(Datum& d);
   void acceptRover(ObsEpoch e);
   /// The LC scheme on a dataset without raw GNSS: the position solutions stand for the epochs.
@@ -146,6 +151,8 @@ class Calibrator {
   double init_time_s_ = 0.0, busy_s_ = 0.0;
   double sink_s_ = 0.0;       // of busy_s_, spent in the sink
   std::set<Counter> warned_;  // bad-data kinds already named in a warning
+  // Per sensor (Kind), a datum far ahead of all others, held until its sensor's next one.
+  std::array<std::optional<std::pair<double, Datum>>, 5> ahead_;
   long released_ = 0;
 };
 

@@ -306,6 +306,14 @@ void Calibrator::restartAfterGap(double t0, double t1) {
 void Calibrator::finish() {
   BusyTimer busy(busy_s_);
   finishing_ = true;
+  for (auto& ahead : ahead_) {  // no next datum of its sensor came to confirm the jump
+    if (ahead) {
+      dropped(Counter::kFutureSamples, ahead->first,
+              "the last datum of a sensor, stamped " +
+                  fixedText(ahead->first - reorder_.newest(), 1) + " s ahead of all other data");
+    }
+    ahead.reset();
+  }
   reorder_.release([&](double, Datum& x) { release(x); }, true);
   process();
   const std::string why = why_not_initialized_.empty()

@@ -55,6 +55,22 @@ TEST(SlidingWindow, MarginalizationKeepsTheEstimateAndCovariance) {
   EXPECT_LT((w.covariance({x(1), x(2)}) - C_full).norm(), 1e-10);
 }
 
+// A 50-sigma outlier on x0 that the robust (Huber) solve down-weights must not enter the marginal
+// prior at full weight when x0 is marginalized: the kept estimate stays where the solve put it.
+TEST(SlidingWindow, MarginalizationKeepsTheRobustWeightsOfTheSolve) {
+  SlidingWindow w = chain();
+  w.addFactor({prior(x(0), Eigen::Vector3d(26, 2, 3), 0.5), {x(0)}, 1.0, "outlier"});
+  ASSERT_TRUE(w.solve(100, 1e-14).usable);
+  const Eigen::Vector3d x1 = w.value(x(1)), x2 = w.value(x(2));
+  SlidingWindow plain = chain();  // without the outlier
+  ASSERT_TRUE(plain.solve(50, 1e-14).usable);
+  EXPECT_LT(std::abs(x1.x() - plain.value(x(1)).x()), 1.0);  // down-weighted, not ignored
+  w.marginalize({x(0)});
+  ASSERT_TRUE(w.solve(100, 1e-14).usable);
+  EXPECT_LT((w.value(x(1)) - x1).norm(), 1e-6);
+  EXPECT_LT((w.value(x(2)) - x2).norm(), 1e-6);
+}
+
 TEST(SlidingWindow, CovarianceIsTheInverseHessian) {
   // The chain is linear with the same information on each axis: per axis, H over (x0, x1, x2) is
   // tridiagonal from the priors (1/0.5^2, 1/0.4^2) and the random walks (1/0.3^2, 1/0.2^2).

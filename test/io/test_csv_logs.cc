@@ -102,6 +102,33 @@ TEST(ImuCsv, RecoverableDamageIsDroppedWithAWarning) {
   expectDataError([&] { readImuCsv(broken); }, broken, 103, "101 rows in a row with NaN");
 }
 
+// One odometer row stamped 1024 weeks late (a GPS week-rollover glitch) is one bad row, not the
+// start of 100 rows going backwards: it is dropped, named by its line, and the rest is read.
+TEST(OdomCsv, OneRowStampedFarAheadIsDroppedAsOneRow) {
+  test::TempDir dir;
+  std::string text = "t,v,w\n";
+  for (int k = 0; k < 300; ++k) {
+    const double t = 100.0 + 0.1 * k + (k == 150 ? 1024 * 604800.0 : 0.0);
+    text += std::to_string(t) + ",1.0,0.0\n";
+  }
+  const std::string path = dir.write("odom.csv", text);
+  std::vector<std::string> warnings;
+  const auto odom = readOdomCsv(path, &warnings);
+  ASSERT_EQ(odom.size(), 299u);
+  for (size_t k = 1; k < odom.size(); ++k) EXPECT_LT(odom[k].t - odom[k - 1].t, 0.25);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], path +
+                             ":152: 1 rows stamped far ahead of the rows before and after them "
+                             "dropped (first here)");
+  // The same jump where the rows after it go on from it is a gap, kept.
+  std::string gap = "t,v,w\n";
+  for (int k = 0; k < 300; ++k)
+    gap += std::to_string(100.0 + 0.1 * k + (k >= 150 ? 50 : 0)) + ",1,0\n";
+  warnings.clear();
+  EXPECT_EQ(readOdomCsv(dir.write("gap.csv", gap), &warnings).size(), 300u);
+  EXPECT_TRUE(warnings.empty());
+}
+
 TEST(ImuCsv, SkipsCommentsAndBlankLines) {
   test::TempDir dir;
   const std::string path =

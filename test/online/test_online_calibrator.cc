@@ -197,13 +197,17 @@ TEST(OnlineCalibrator, LateDuplicatedAndNonFiniteDataAreCountedNamedAndDropped) 
       OdomSample odo = in.odom[ko - 1];
       odo.v = INFINITY;
       cal->addOdometer(odo);
+      OdomSample rollover = in.odom[ko - 1];  // 1024 weeks ahead: must not stop the run
+      rollover.t += 1024 * 604800.0;
+      cal->addOdometer(rollover);
     }
   }
   cal->finish();
   const CalibrationRun& run = cal->run();
   EXPECT_EQ(run.counter(Counter::kDuplicateSamples), 1);
-  EXPECT_EQ(run.counter(Counter::kLateSamples), 1);
+  EXPECT_EQ(run.counter(Counter::kLateSamples), 1);  // the rollover moved no frontier
   EXPECT_EQ(run.counter(Counter::kNonFiniteSamples), 2);
+  EXPECT_EQ(run.counter(Counter::kFutureSamples), 1);
   const auto said = [&](const std::string& what) {
     return std::any_of(run.warnings.begin(), run.warnings.end(),
                        [&](const std::string& w) { return w.find(what) != std::string::npos; });
@@ -211,6 +215,7 @@ TEST(OnlineCalibrator, LateDuplicatedAndNonFiniteDataAreCountedNamedAndDropped) 
   EXPECT_TRUE(said("late_samples_dropped"));
   EXPECT_TRUE(said("duplicate_samples_dropped"));
   EXPECT_TRUE(said("non_finite_samples_dropped"));
+  EXPECT_TRUE(said("future_samples_dropped"));
   const CalibrationError e = calibrationError(run.final(), in.truth->calib);
   EXPECT_LT(e.p_b_m.head<2>().norm(), 0.15);
 }
@@ -291,6 +296,15 @@ TEST(OnlineCalibrator, TimeOffsetsOfTheDatasetPutALateOdometerBackOnTime) {
   const CalibrationEstimate on_time = replayFolder(dir.file("on_time"), job, nullptr).final();
   const CalibrationEstimate late = replayFolder(dir.file("late"), job, nullptr).final();
   EXPECT_GT(std::abs(late.calib.s_v - on_time.calib.s_v), 1e-6);
+
+  // A robot feeding the calibrator directly (its samples as stamped, the offset in the
+  // description it was made with) gets the same correction as the replay.
+  CalibrationInputs raw = loadCalibrationInputs(dir.file("late"));
+  raw.description.time_offsets.odometer = -0.05;
+  const CalibrationEstimate fed = pushWithLatency(raw, CalibrationOptions{}, nullptr).final();
+  EXPECT_NEAR(fed.calib.s_v, on_time.calib.s_v, 1e-6);
+  EXPECT_NEAR(fed.calib.s_w, on_time.calib.s_w, 1e-6);
+  EXPECT_NEAR((fed.calib.p_b_m - on_time.calib.p_b_m).norm(), 0.0, 1e-5);
 
   DatasetDescription d = readDatasetDescription(dir.file("late"));
   d.time_offsets.odometer = -0.05;

@@ -1,0 +1,54 @@
+# The ctest labels of the GoogleTest tests (test/CMakeLists.txt): every test is `fast` or `slow`,
+# and `real` where it reads the real recordings in data/real/. `slow`: 3 s or more in Release on
+# the 2-core machine (ctest --timeout-free timing, 2026-11-27); the sanitizer run leaves them out.
+# A test not named here is fast and not real.
+set(GIOCAL_SLOW_TESTS
+  OnlineCalibrator.TheOdometerDelayIsEstimatedByBothEstimators
+  ImuGaps.BothEstimatorsBridgeOrRestartAndStayWithinTwiceTheCleanError
+  OnlineCalibrator.TheGyroTiltIsEstimatedByBothEstimators
+  RealHusky.LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes
+  RealHusky.FixesTheGateRefusesAreNamedWithWhatToChange
+  DegradedRuns.BothEstimatorsSayWhenTheyDivergeAndStartAgain
+  OnlineCalibrator.BothEstimatorsWeighTheNonHolonomicConstraintAlike
+  SimulateTrajectory.TheSimulatorsOwnGnssAndAntennaPathGiveItsDriveAndCalibration
+  GnssSimulation.GiocalRtkFixesUnderTreesAreWithin5cm
+  OnlineCalibrator.LateOdometerStampsAreNamedWithTheOffsetToSet
+  DegradedRuns.ACalibrationThatJumpsIsNamed
+  DegradedRuns.TheFactorGraphLeavesOutSlippingOdometerSamples
+  RealHusky.AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed
+  OnlineCalibrator.StreamedReplayEqualsTheBatchCalibrators
+  OdometerDelay.LateAndEarlyWheelStampsOfSimulatedDrives
+  CoarseMounting.SimulatedDrivesWithTheImuFarOff
+  I2navImport.ASimulatedDriveRoundTripsAndCalibratesWithItsSpeedOnlyOdometer
+  LooselyCoupled.BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm
+)
+set(GIOCAL_REAL_TESTS
+  BagImport.GnssCommMessagesRoundTripARealReceiversObservations
+  BagImport.RealHuskyAndJackalBags
+  BagImport.UbloxRawGnssReadsAsTheUbxLogDoes
+  CoarseMounting.RealHuskyLog
+  CycleSlip.ACodeOutlierIsNotASlipWhenThePhaseTestsPass
+  CycleSlip.ASignalBlockedForAMomentIsTestedAcrossTheGap
+  CycleSlip.FewFalseAlarmsOnRealDataAndInjectedSlipsAreFound
+  Ephemeris.VelocityAndClockDriftAreTheDerivativesOfPositionAndClock
+  PosFile.ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances
+  RealHusky.AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed
+  RealHusky.FixesTheGateRefusesAreNamedWithWhatToChange
+  RealHusky.LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes
+  RinexObs.EventFlagRecordsAreSkipped
+  Rtk.BadInputIsReported
+  Rtk.GsiRinex2MatchesRtklib
+  Rtk.MosaicGpsOnly
+  Rtk.MosaicMultiGnssFixesAndHitsTheKnownPosition
+  Rtk.MosaicThreeFrequencies
+  SimConfig.ManyLapsReadFast
+  Spp.GsiRinex2WithinFiveMetres
+  Spp.MosaicGpsOnly
+  Spp.MosaicMultiConstellationWithinFiveMetresAndStaticDoppler
+  UbxLog.ADamagedCopyIsReadUpToTheDamageAndSaysWhere
+  UbxRealLog.BeidouD1EphemeridesAgreeWithConvbin
+  UbxRealLog.BeidouD2EphemerisAgreesWithConvbin
+  UbxRealLog.EveryObservationAgreesWithConvbin
+  UbxRealLog.GalileoEphemeridesPositionTheReceiverAsGpsDoes
+  UbxRealLog.GpsEphemeridesAgreeWithConvbin
+)
