@@ -1,14 +1,17 @@
 #include "apps/check_command.h"
 
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "common/calibration/coarse_mounting.h"
 #include "common/calibration/dataset_diagnosis.h"
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
+#include "common/imu/accel_units.h"
 #include "common/io/data_error.h"
 #include "common/io/dataset_description.h"
 #include "common/io/sensor_logs.h"
@@ -60,6 +63,16 @@ void printMountingCheck(std::ostream& out, const CalibrationPrior& c, const Coar
   }
 }
 
+// What giocal import says it converted (import.json next to dataset.yaml), or nothing.
+std::string importedUnitNote(const std::string& folder) {
+  std::ifstream in(folder + "/import.json");
+  if (!in) return "";
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.contains("imu") || !j["imu"].contains("accel_unit")) return "";
+  const std::string unit = j["imu"]["accel_unit"].get<std::string>();
+  return unit == "m/s^2" ? "" : " (giocal import converted it from " + unit + ": import.json)";
+}
+
 }  // namespace
 
 void runCheck(const std::string& folder, std::ostream& out) {
@@ -78,6 +91,17 @@ void runCheck(const std::string& folder, std::ostream& out) {
     for (OdomSample& o : odom) o.w = gyroYawRate(imu, o.t, up);
   }
   printStats(out, d.imu, timesOf(imu));
+  // imu.csv is m/s^2; a log in g or mg, or one whose force is gravity in no unit, is no use.
+  const AccelUnit unit = accelUnitOf(imu);
+  if (!unit.decided) throw std::runtime_error(accelUnitProblem(unit, d.pathOf(d.imu)));
+  if (unit.name != "m/s^2") {
+    throw std::runtime_error(d.pathOf(d.imu) + ": the mean specific force is " +
+                             std::to_string(unit.mean_norm) + ": gravity in " + unit.name +
+                             ", but imu.csv holds m/s^2 (multiply ax, ay, az by " +
+                             std::to_string(unit.to_si) + "; giocal import converts bags)");
+  }
+  out << "            mean specific force " << std::setprecision(4) << unit.mean_norm << " m/s^2"
+      << importedUnitNote(folder) << "\n";
   printStats(out, d.odom, timesOf(odom));
   if (!d.truth.empty()) printStats(out, d.truth, timesOf(readTruthCsv(d.pathOf(d.truth))));
   std::vector<std::string> missing;

@@ -65,6 +65,9 @@ int runImportCommand(int argc, char** argv) {
       "odom-topic", po::value<std::string>()->default_value(""),
       "nav_msgs/Odometry or geometry_msgs/TwistStamped topic")(
       "fix-topic", po::value<std::string>()->default_value(""), "sensor_msgs/NavSatFix topic")(
+      "stamps", po::value<std::string>()->default_value("auto"),
+      "a bag's sample times: header (the stamps), record (the bag's receive times) or auto "
+      "(record times for a topic whose stamps are frozen, repeat or run far from them)")(
       "i2nav-imu", po::value<std::string>()->default_value(""),
       "i2Nav IMU text (increments, odometer speed column)")(
       "i2nav-pos", po::value<std::string>()->default_value(""), "i2Nav GNSS position file")(
@@ -87,6 +90,7 @@ int runImportCommand(int argc, char** argv) {
   job.imu_topic = vm["imu-topic"].as<std::string>();
   job.odom_topic = vm["odom-topic"].as<std::string>();
   job.fix_topic = vm["fix-topic"].as<std::string>();
+  job.stamps = vm["stamps"].as<std::string>();
   job.i2nav_imu = vm["i2nav-imu"].as<std::string>();
   job.i2nav_pos = vm["i2nav-pos"].as<std::string>();
   job.i2nav_nav = vm["i2nav-nav"].as<std::string>();

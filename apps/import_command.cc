@@ -52,7 +52,8 @@ nlohmann::ordered_json countsJson(const import::TopicCounts& c) {
           {"out_of_order", c.out_of_order},
           {"non_finite", c.non_finite},
           {"no_fix", c.no_fix},
-          {"largest_gap_s", c.largest_gap_s}};
+          {"largest_gap_s", c.largest_gap_s},
+          {"times", c.record_times ? "record" : "header"}};
 }
 
 // Single point positions of the imported epochs: the check that observations and ephemerides
@@ -154,7 +155,8 @@ void importBag(const ImportJob& job, std::ostream& log) {
   const auto bag = import::openBag(job.bag);
   ProgressLine progress("import", 0.0, 1.0, job.quiet, "of the messages");
   import::BagDataset d = import::readBagDataset(
-      *bag, {job.imu_topic, job.odom_topic, job.fix_topic}, [&](double share) {
+      *bag, {job.imu_topic, job.odom_topic, job.fix_topic, import::stampSourceFromName(job.stamps)},
+      [&](double share) {
         progress.update(share);
   checkStop(job.stop);
 });
@@ -214,6 +216,7 @@ nlohmann::ordered_json j;
 j["files"] = files;
 j["source"] = job.bag;
 j["imu"] = countsJson(d.imu_counts);
+j["imu"]["accel_unit"] = d.imu_accel_unit;  // as the bag had it; imu.csv is in m/s^2
 j["odometry"] = countsJson(d.odom_counts);
 if (!d.fix_counts.topic.empty()) j["fix"] = countsJson(d.fix_counts);
 if (d.raw_gnss) {

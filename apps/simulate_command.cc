@@ -65,7 +65,10 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   // Fixed and float solutions; single points are metres off a vehicle's path.
   std::vector<PositionFix> fixes;
   long left_out = 0;
-  for (const PositionFix& f : readPosFile(gnss.trajectory)) {
+  std::vector<std::string> repaired;
+  const std::vector<PositionFix> solutions = readPosFile(gnss.trajectory, &repaired);
+  for (const std::string& w : repaired) log << "  warning: " << w << "\n";
+  for (const PositionFix& f : solutions) {
     if (f.quality == 1 || f.quality == 2) {
       fixes.push_back(f);
     } else {

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "common/geodesy/wgs84.h"
+#include "common/imu/accel_units.h"
 #include "common/time/gps_time.h"
 #include "import/gnss_comm_messages.h"
 #include "import/ublox_messages.h"
@@ -81,15 +82,41 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
-// Per topic: stamps in order, their offsets from the bag's receive times, the first covariances.
+// Per topic: header stamps and receive times of the samples kept, the times chosen, their offsets
+// from the receive times, the first covariances.
 struct Stream {
   const BagTopic* topic = nullptr;
   RosSchema schema;
   TopicCounts* counts;
   double last = -INFINITY;
-  std::vector<double> offsets;  // header stamp - receive time
+  std::vector<double> offsets;  // chosen time - receive time
   std::vector<double> covariance;
+  TopicStamps stamps;  // of every sample read, in bag order
 };
+
+// The chosen times put on `samples` (header stamps or record times), those not after the
+// previous one dropped and counted, the offsets and gaps kept for the checks that follow.
+template <class T>
+void applyTimes(std::vector<T>& samples, Stream& s, bool record) {
+  std::vector<T> kept;
+  kept.reserve(samples.size());
+  for (size_t k = 0; k < samples.size(); ++k) {
+    const double received = s.stamps.record[k];
+    const double t = record ? received : s.stamps.header[k];
+    if (t <= s.last) {
+      ++s.counts->out_of_order;
+      continue;
+    }
+    if (std::isfinite(s.last))
+      s.counts->largest_gap_s = std::max(s.counts->largest_gap_s, t - s.last);
+    s.last = t;
+    s.offsets.push_back(t - received);
+    samples[k].t = t;
+    kept.push_back(samples[k]);
+  }
+  samples.swap(kept);
+  s.counts->record_times = record;
+}
 
 std::string fixed(double v, int decimals) {
   char buf[64];
@@ -129,8 +156,21 @@ void setNoise(BagDataset& out, const Stream* imu, const Stream* odom) {
                                 o.yaw_rate_sigma, "odometer yaw_rate_sigma", out.noise_sources);
 }
 
-void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams,
-                      const BagSource& bag) {
+void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams, const BagSource& bag,
+                      StampSource mode) {
+  std::vector<TopicStamps> stamps;
+  std::vector<Stream*> order;
+  for (auto& [name, s] : streams) {
+    stamps.push_back(s.stamps);
+    order.push_back(&s);
+  }
+  const std::vector<bool> record = useRecordTimes(stamps, mode, bag.path(), out.warnings);
+  for (size_t i = 0; i < order.size(); ++i) {
+    Stream& s = *order[i];
+    if (s.counts == &out.imu_counts) applyTimes(out.imu, s, record[i]);
+    if (s.counts == &out.odom_counts) applyTimes(out.odom, s, record[i]);
+    if (s.counts == &out.fix_counts) applyTimes(out.fixes, s, record[i]);
+  }
   // One time base: wall-clock (UTC) stamps on every topic, or on none.
   std::string utc, other;
   for (const auto& [name, s] : streams) {
@@ -177,7 +217,24 @@ void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams,
   if (out.imu.size() < 2 || out.odom.size() < 2) {
     throw std::runtime_error(bag.path() + ": fewer than 2 usable IMU or odometry messages");
   }
-  setNoise(out, &streams.at(out.imu_counts.topic), &streams.at(out.odom_counts.topic));
+  // sensor_msgs/Imu says m/s^2, but drivers publish g too (a real Husky: mean |f| 1.03).
+  Stream& imu_stream = streams.at(out.imu_counts.topic);
+  const AccelUnit unit = accelUnitOf(out.imu);
+  if (!unit.decided) {
+    throw std::runtime_error(
+        accelUnitProblem(unit, bag.path() + ": topic " + out.imu_counts.topic));
+  }
+  out.imu_accel_unit = unit.name;
+  if (unit.to_si != 1.0) {
+    for (ImuSample& s : out.imu) s.acc *= unit.to_si;
+    for (std::size_t k = 3; k < imu_stream.covariance.size(); ++k)
+      if (imu_stream.covariance[k] > 0.0) imu_stream.covariance[k] *= unit.to_si * unit.to_si;
+    out.warnings.push_back(bag.path() + ": topic " + out.imu_counts.topic +
+                           ": linear_acceleration in " + unit.name + " (mean |f| " +
+                           fixed(unit.mean_norm, 3) + "), not m/s^2: converted (x " +
+                           fixed(unit.to_si, 5) + ")");
+  }
+  setNoise(out, &imu_stream, &streams.at(out.odom_counts.topic));
   if (!out.utc_stamps) {
     out.warnings.push_back(bag.path() + ": stamps are not wall-clock time (the first is " +
                            fixed(out.imu.front().t, 3) +
@@ -208,7 +265,8 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
     if (!t) return;
     c.topic = t->topic;
     c.type = t->type;
-    streams.emplace(t->topic, Stream{t, schemaOf(bag, *t), &c, -INFINITY, {}, {}});
+    streams.emplace(t->topic,
+                    Stream{t, schemaOf(bag, *t), &c, -INFINITY, {}, {}, {t->topic, {}, {}}});
   };
   add(imu, out.imu_counts);
   add(odom, out.odom_counts);
@@ -245,14 +303,15 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
   // One decoded message of an IMU, odometry or fix topic into the logs.
   auto readSample = [&](Stream& s, const RosMessage& m, double received) {
     const double stamp = m.time("header.stamp");
-    if (!std::isfinite(stamp) || stamp <= s.last) {
+    if (!std::isfinite(stamp)) {
       ++s.counts->out_of_order;
       return;
     }
-    if (std::isfinite(s.last))
-      s.counts->largest_gap_s = std::max(s.counts->largest_gap_s, stamp - s.last);
-    s.last = stamp;
-    s.offsets.push_back(stamp - received);
+    // Times are chosen and ordered once all are read (applyTimes); each kept sample's stamps:
+    const auto keep = [&] {
+      s.stamps.header.push_back(stamp);
+      s.stamps.record.push_back(received);
+    };
     if (s.topic == imu) {
       ImuSample x;
       x.t = stamp;
@@ -273,6 +332,7 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
                         m.number("linear_acceleration_covariance[8]")};
       }
       out.imu.push_back(x);
+      keep();
     } else if (s.topic == odom) {
       const std::string twist = twist_stamped ? "twist" : "twist.twist";
       OdomSample x{stamp, m.number(twist + ".linear.x"), m.number(twist + ".angular.z")};
@@ -284,6 +344,7 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
         s.covariance = {m.number("twist.covariance[0]"), m.number("twist.covariance[35]")};
       }
       out.odom.push_back(x);
+      keep();
     } else {
       if (m.number("status.status") < 0) {
         ++s.counts->no_fix;
@@ -313,6 +374,7 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
       const Eigen::Matrix3d R_e_n = rotationEcefFromEnu(g.lat, g.lon);
       f.cov_e = R_e_n * cov_enu * R_e_n.transpose();
       out.fixes.push_back(f);
+      keep();
     }
   };
   long long total = 0, visited = 0;
@@ -353,7 +415,7 @@ BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
     out.raw_gnss = out.raw_gnss_source == "ublox_msgs" ? ubx.finish() : gnss_comm.finish();
     for (const std::string& w : out.raw_gnss->warnings) out.warnings.push_back(w);
   }
-  finishBagDataset(out, streams, bag);
+  finishBagDataset(out, streams, bag, topics.stamps);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "common/io/dataset_description.h"
 #include "common/odometer/odom_sample.h"
 #include "import/bag_source.h"
+#include "import/bag_stamps.h"
 #include "import/ubx_log.h"
 
 namespace giocal::import {
@@ -22,12 +23,14 @@ namespace giocal::import {
 /// one topic of each type.
 struct BagTopics {
   std::string imu, odom, fix;
+  StampSource stamps = StampSource::kAuto;  // header stamps or record times (bag_stamps.h)
 };
 
 struct TopicCounts {
   std::string topic, type;
   long long read = 0;
   long long out_of_order = 0;  // stamps not after the previous one (dropped)
+  bool record_times = false;   // the bag's record times replaced the header stamps
   long long non_finite = 0;    // NaN or infinite values (dropped)
   long long no_fix = 0;        // NavSatFix with status -1 (dropped)
   double largest_gap_s = 0.0;
@@ -46,14 +49,16 @@ struct BagDataset {
   ImuNoise imu_noise;  // from the message covariances where meaningful, else the defaults
   OdometerNoise odom_noise;
   std::vector<std::string> noise_sources;  // one line per value: "covariance" or "default"
+  std::string imu_accel_unit = "m/s^2";  // the unit the bag's accelerations were in (converted)
   bool utc_stamps = true;  // false: stamps are not UTC (simulated or relative ROS time), kept as is
   int leap_seconds = 0;    // GPS - UTC applied
   std::vector<std::string> warnings;
 };
 
 /// Reads the bag; throws std::runtime_error naming the bag and the topic or type for a bag without
-/// an IMU or odometry topic, ambiguous or unknown topics, messages that do not decode, and sensors
-/// whose stamps are not on one time base. `progress` (may be empty) is called with the share of
+/// an IMU or odometry topic, ambiguous or unknown topics, messages that do not decode, sensors
+/// whose stamps are not on one time base, and an IMU whose mean specific force is gravity in no
+/// unit. Accelerations in g or mg are converted to m/s^2 (imu_accel_unit, a warning). `progress` (may be empty) is called with the share of
 /// the messages read (it may throw to stop).
 BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
                           const std::function<void(double)>& progress = {});

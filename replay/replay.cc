@@ -124,8 +124,9 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
     base = std::make_shared<RinexObsReader>(need(d.base_obs));
   }
   std::vector<PositionFix> positions;  // a solution file is small: read whole
+  std::vector<std::string> pos_warnings;
   if (!job.positions.empty()) {
-    positions = readPosFile(job.positions);
+    positions = readPosFile(job.positions, &pos_warnings);
     if (positions.empty()) throw DataError(job.positions, 0, "no position solutions");
   }
   std::vector<NavData> navs;
@@ -176,6 +177,7 @@ CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, Run
     more.push_back(rover->warnings());
     more.push_back(base->warnings());
   }
+  more.push_back(pos_warnings);
   for (const auto& m : more) damage.insert(damage.end(), m.begin(), m.end());
   run.warnings.insert(run.warnings.begin(), damage.begin(), damage.end());
   if (run.data_duration_s <= 0.0) {

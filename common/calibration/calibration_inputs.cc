@@ -39,7 +39,7 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::st
   const std::string truth = folder + "/truth_calib.yaml";
   if (std::filesystem::exists(truth)) in.truth = readTruthCalibration(truth);
   if (!positions.empty()) {
-    in.positions = readPosFile(positions);
+    in.positions = readPosFile(positions, &in.warnings);
     if (in.positions.empty()) throw DataError(positions, 0, "no position solutions");
     for (PositionFix& p : in.positions) p.t += d.time_offsets.positions;
   }

@@ -17,6 +17,8 @@
 namespace giocal {
 namespace {
 
+constexpr double kPrintedResolution = 1e-4;  // [m] of the standard deviations in a .pos
+
 double timeOf(const std::string& a, const std::string& b, const std::string& path, long line) {
   if (a.find('/') != std::string::npos) {
     CalendarTime c;
@@ -51,7 +53,21 @@ const PositionFix* fixAt(const std::vector<PositionFix>& fixes, double t, double
   return best && std::abs(best->t - t) <= tolerance ? best : nullptr;
 }
 
-std::vector<PositionFix> readPosFile(const std::string& path) {
+Eigen::Matrix3d nearestPositiveDefinite(const Eigen::Matrix3d& cov) {
+  const Eigen::Vector3d sd = cov.diagonal().cwiseSqrt();
+  const Eigen::Matrix3d rho = sd.cwiseInverse().asDiagonal() * cov * sd.cwiseInverse().asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(rho);
+  // Floor: a correlation matrix's eigenvalues sum to 3; 1e-3 keeps it well conditioned.
+  const Eigen::Matrix3d clipped = eig.eigenvectors() *
+                                  eig.eigenvalues().cwiseMax(1e-3).asDiagonal() *
+                                  eig.eigenvectors().transpose();
+  const Eigen::Vector3d d = clipped.diagonal().cwiseSqrt().cwiseInverse();
+  const Eigen::Matrix3d corr = d.asDiagonal() * clipped * d.asDiagonal();
+  return sd.asDiagonal() * corr * sd.asDiagonal();
+}
+
+std::vector<PositionFix> readPosFile(const std::string& path, std::vector<std::string>* warnings) {
+  long repaired = 0, first_repaired = 0, zeros = 0, first_zero = 0;
   std::ifstream in(path);
   if (!in) throw DataError(path, 0, "cannot open file");
   std::vector<PositionFix> fixes;
@@ -84,9 +100,20 @@ std::vector<PositionFix> readPosFile(const std::string& path) {
       if (!std::isfinite(s) || std::abs(s) > 1e4)
         throw DataError(path, line, "bad standard deviation");
     }
-    if (!(sdn > 0.0 && sde > 0.0 && sdu > 0.0)) {
-      throw DataError(path, line, "sdn, sde and sdu must be positive");
+    if (!(sdn >= 0.0 && sde >= 0.0 && sdu >= 0.0)) {
+      throw DataError(path, line, "sdn, sde and sdu must not be negative");
     }
+    // RTKLIB prints 0.0000 for a fixed solution's standard deviation below 0.05 mm (the mosaic
+    // pair's reference: line 13): read as the printed resolution, counted.
+    double* sds[3] = {&sdn, &sde, &sdu};
+    bool zero = false;
+    for (double* s : sds) {
+      if (*s == 0.0) {
+        *s = kPrintedResolution;
+        zero = true;
+      }
+    }
+    if (zero && zeros++ == 0) first_zero = line;
     if (!fixes.empty() && !(f.t > fixes.back().t)) {
       throw DataError(path, line, "time does not increase");
     }
@@ -96,23 +123,27 @@ std::vector<PositionFix> readPosFile(const std::string& path) {
     f.cov_enu << sde * sde, cov(sdne), cov(sdeu), cov(sdne), sdn * sdn, cov(sdun), cov(sdeu),
         cov(sdun), sdu * sdu;
     if (Eigen::LLT<Eigen::Matrix3d>(f.cov_enu).info() != Eigen::Success) {
-      // A near-singular covariance (few satellites) written to 0.1 mm can round to correlations
-      // just past 1: the nearest positive definite matrix is the solution's. Beyond rounding the
-      // file is wrong.
-      const Eigen::Vector3d sd_enu = f.cov_enu.diagonal().cwiseSqrt();
-      const Eigen::Matrix3d rho =
-          sd_enu.cwiseInverse().asDiagonal() * f.cov_enu * sd_enu.cwiseInverse().asDiagonal();
-      if ((rho - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1.01) {
-        throw DataError(path, line, "the covariance is not positive definite");
-      }
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(f.cov_enu);
-      const double floor = 1e-6 * f.cov_enu.diagonal().maxCoeff();
-      f.cov_enu = eig.eigenvectors() * eig.eigenvalues().cwiseMax(floor).asDiagonal() *
-                  eig.eigenvectors().transpose();
+      // RTKLIB's fixed solutions print correlations past +-1 (sdn 0.0042, sde 0.0016, sdne
+      // -0.0029 on a real car drive: -1.25), and a near-singular covariance written to 0.1 mm
+      // rounds to them: repaired, counted, not refused.
+      f.cov_enu = nearestPositiveDefinite(f.cov_enu);
+      if (repaired++ == 0) first_repaired = line;
     }
     f.quality = static_cast<int>(q);
     f.satellites = static_cast<int>(ns);
     fixes.push_back(f);
+  }
+  if (zeros > 0 && warnings) {
+    warnings->push_back(path + ":" + std::to_string(first_zero) + ": " + std::to_string(zeros) +
+                        " rows with a standard deviation printed as 0 read as 0.1 mm, the "
+                        "printed resolution (first here)");
+  }
+  if (repaired > 0 && warnings) {
+    warnings->push_back(path + ":" + std::to_string(first_repaired) + ": " +
+                        std::to_string(repaired) +
+                        " rows with a covariance that is not positive definite (correlations "
+                        "beyond +-1) read as the nearest positive definite one with the same "
+                        "standard deviations (first here)");
   }
   return fixes;
 }

@@ -25,7 +25,14 @@ constexpr double kPositionTolerance = 0.05;
 const PositionFix* fixAt(const std::vector<PositionFix>& fixes, double t, double tolerance);
 
 /// Throws DataError naming the file, line and field for anything it cannot read; the times
-/// must increase.
-std::vector<PositionFix> readPosFile(const std::string& path);
+/// must increase. A covariance that is not positive definite (RTKLIB's fixed solutions often
+/// print correlations beyond +-1) becomes the nearest positive definite one with the same
+/// standard deviations; `warnings` (if given) gets one line counting them and naming the first.
+std::vector<PositionFix> readPosFile(const std::string& path,
+                                     std::vector<std::string>* warnings = nullptr);
+
+/// The correlations of `cov` made a positive definite correlation matrix (eigenvalues floored,
+/// then the diagonal put back to 1), with cov's standard deviations.
+Eigen::Matrix3d nearestPositiveDefinite(const Eigen::Matrix3d& cov);
 
 }  // namespace giocal

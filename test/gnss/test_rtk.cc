@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <fstream>
+#include <tuple>
 
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/dd_epoch.h"
@@ -181,6 +182,39 @@ TEST(PosFile, ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances) {
   EXPECT_EQ(Eigen::LLT<Eigen::Matrix3d>(near[0].cov_enu).info(), Eigen::Success);
   EXPECT_NEAR(std::sqrt(near[0].cov_enu(1, 1)), 0.3967, 1e-3);
 
+  // RTKLIB's own fixed solutions print correlations beyond +-1 and standard deviations of 0.0000:
+  // each row kept, a positive definite covariance, and one warning per repair counting the rows
+  // and naming the first line.
+  for (const auto& [set, rows, expected] :
+       {std::tuple<std::string, size_t, std::vector<std::string>>{
+            "cssrlib-static-5km",
+            60,
+            {":36: 3 rows with a covariance that is not positive definite"}},
+        {"mosaic-static-nagoya",
+         301,
+         {":13: 138 rows with a standard deviation printed as 0",
+          ":13: 189 rows with a covariance that is not positive definite"}}}) {
+    std::vector<std::string> warnings;
+    const std::string path = kData + set + "/rtklib_reference.pos";
+    const std::vector<PositionFix> fixes = readPosFile(path, &warnings);
+    ASSERT_EQ(fixes.size(), rows) << set;
+    ASSERT_EQ(warnings.size(), expected.size()) << set;
+    for (size_t k = 0; k < expected.size(); ++k)
+      EXPECT_EQ(warnings[k].rfind(path + expected[k], 0), 0u) << warnings[k];
+    for (const PositionFix& f : fixes)
+      EXPECT_EQ(Eigen::LLT<Eigen::Matrix3d>(f.cov_enu).info(), Eigen::Success);
+  }
+  dir.write("rho.pos",
+            "% header\n2024/06/01 00:00:00.000 35 136 50 1 7 0.0042 0.0016 0.01 "
+            "-0.0029 0 0\n");
+  const PositionFix rho = readPosFile(dir.file("rho.pos")).front();
+  EXPECT_NEAR(std::sqrt(rho.cov_enu(1, 1)), 0.0042, 1e-9);  // the standard deviations kept
+  EXPECT_NEAR(std::sqrt(rho.cov_enu(0, 0)), 0.0016, 1e-9);
+  EXPECT_NEAR(std::sqrt(rho.cov_enu(2, 2)), 0.01, 1e-9);
+  const double r = rho.cov_enu(0, 1) / (0.0042 * 0.0016);
+  EXPECT_LT(r, -0.99);  // the sign and near-full strength of the printed correlation (-1.25)
+  EXPECT_GT(r, -1.0);
+
   // Bad rows name the file and line.
   for (const std::string& bad :
        {std::string("2024/13/01 00:00:00.000 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n"),
@@ -188,8 +222,7 @@ TEST(PosFile, ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances) {
         std::string("2024/06/01 00:00:00.000 35 136 50 1 7 -0.1 0.1 0.1 0 0 0\n"),
         std::string("2024/06/01 00:00:00.000 35 136 50 1 7 0.1 0.1 nan 0 0 0\n"),
         std::string("2024/06/01 00:00:00.000 35 136\n"),
-        std::string("2316 1e99 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n"),
-        std::string("2024/06/01 00:00:00.000 35 136 50 1 7 0.1 0.1 0.1 0.2 0 0\n")}) {
+        std::string("2316 1e99 35 136 50 1 7 0.1 0.1 0.1 0 0 0\n")}) {
     dir.write("bad.pos", "% header\n" + bad);
     try {
       readPosFile(dir.file("bad.pos"));

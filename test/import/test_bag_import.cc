@@ -28,7 +28,7 @@ RosMessage imuMessage(double k) {
   m.set("angular_velocity.y", -0.02);
   m.set("angular_velocity.z", 0.3);
   m.set("linear_acceleration.x", 0.1);
-  m.set("linear_acceleration.y", 0.2 * k);
+  m.set("linear_acceleration.y", 0.2 * (static_cast<int>(k) % 10));  // gravity stays the mean
   m.set("linear_acceleration.z", 9.81);
   for (int i : {0, 4, 8}) {
     m.set("angular_velocity_covariance[" + std::to_string(i) + "]", 1e-4);  // 0.01 rad/s at 100 Hz
@@ -98,7 +98,9 @@ TEST(BagImport, SimulatedBagsRoundTripEveryMessageType) {
       EXPECT_NEAR(d.odom_noise.speed_sigma, 0.01, 1e-12);
       EXPECT_NEAR(d.odom_noise.yaw_rate_sigma, 0.02, 1e-12);
     }
-    ASSERT_EQ(d.warnings.size(), 1u);
+    // The NO_FIX fix dropped, and the gap of 2 s between usable fixes it leaves.
+    ASSERT_EQ(d.warnings.size(), 2u) << d.warnings.back();
+    EXPECT_NE(d.warnings[1].find("topic /fix: a gap of 2.00 s"), std::string::npos);
     EXPECT_NE(d.warnings[0].find("topic /fix: 1 fixes with status NO_FIX dropped"),
               std::string::npos);
   }
@@ -134,8 +136,9 @@ TEST(BagImport, BadBagsAnswerWithTheTopicAndTheProblem) {
   EXPECT_NE(error(dir.file("two.bag"))
                 .find("several sensor_msgs/Imu topics: /imu_a /imu_b; choose one with --imu-topic"),
             std::string::npos);
+  BagTopics header_stamps{"/imu_a", "", "", StampSource::kHeader};
   EXPECT_NE(
-      error(dir.file("two.bag"), {"/imu_a", "", ""})
+      error(dir.file("two.bag"), header_stamps)
           .find("mixed time bases: stamps of /imu_a are wall-clock time, those of /odom are not"),
       std::string::npos)
       << error(dir.file("two.bag"), {"/imu_a", "", ""});
@@ -163,7 +166,7 @@ TEST(BagImport, BadBagsAnswerWithTheTopicAndTheProblem) {
     }
   }
   const BagDataset late = readBagDataset(*openBag(dir.file("late.bag")), {});
-  ASSERT_EQ(late.warnings.size(), 2u);  // and the NO_FIX fix
+  ASSERT_EQ(late.warnings.size(), 3u) << late.warnings.back();  // and the NO_FIX fix, its gap
   EXPECT_NE(late.warnings[0].find("differ by more than 1 s between sensors: /fix -0.010 s; /imu "
                                   "-0.002 s; /odom 1.497 s;"),
             std::string::npos)
@@ -173,6 +176,80 @@ TEST(BagImport, BadBagsAnswerWithTheTopicAndTheProblem) {
   EXPECT_EQ(dup.imu_counts.out_of_order, 1);
   EXPECT_EQ(dup.imu_counts.non_finite, 1);
   EXPECT_EQ(dup.warnings.size(), 2u);
+}
+
+// A bag whose odometry header stamps are frozen (every message the same stamp) while the bag's
+// record times are good: the record times stand in, with a warning naming the topic; with
+// --stamps header the old refusal; with --stamps record every topic takes its record times.
+TEST(BagImport, FrozenHeaderStampsGiveWayToTheRecordTimes) {
+  test::TempDir dir;
+  {
+    BagWriter w(dir.file("frozen.bag"));
+    for (int k = 0; k < 1000; ++k) {
+      const double t = kT0 + 0.01 * k;
+      w.write("/imu", "sensor_msgs/Imu", kImuDef, imuMessage(k), t, t + 0.002);
+      if (k % 5 == 0) {
+        RosMessage m;
+        m.set("twist.twist.linear.x", 1.0);
+        w.write("/odom", "nav_msgs/Odometry", kOdomDef, m, kT0, t + 0.003);
+      }
+    }
+  }
+  const BagDataset d = readBagDataset(*openBag(dir.file("frozen.bag")), {});
+  ASSERT_EQ(d.odom.size(), 200u);
+  EXPECT_NEAR(d.odom[10].t - d.odom[9].t, 0.05, 1e-6);
+  EXPECT_TRUE(d.odom_counts.record_times);
+  EXPECT_FALSE(d.imu_counts.record_times);
+  ASSERT_EQ(d.warnings.size(), 1u);
+  EXPECT_NE(d.warnings[0].find("topic /odom: 199 of 200 header stamps not after the previous one"),
+            std::string::npos)
+      << d.warnings[0];
+  BagTopics header;
+  header.stamps = StampSource::kHeader;
+  EXPECT_THROW(readBagDataset(*openBag(dir.file("frozen.bag")), header), std::runtime_error);
+  BagTopics record;
+  record.stamps = StampSource::kRecord;
+  const BagDataset r = readBagDataset(*openBag(dir.file("frozen.bag")), record);
+  EXPECT_TRUE(r.imu_counts.record_times);
+  EXPECT_EQ(r.imu.size(), 1000u);
+  EXPECT_THROW(stampSourceFromName("receive"), std::invalid_argument);
+}
+
+// sensor_msgs/Imu is m/s^2, but drivers publish g (a real Husky: mean |f| 1.03) and mg: converted
+// and said; a force that is gravity in no unit names the topic.
+TEST(BagImport, AccelerationsInGOrMgAreConvertedAndOtherUnitsRefused) {
+  test::TempDir dir;
+  for (const double unit : {1.0 / 9.80665, 1000.0 / 9.80665, 0.5}) {
+    const std::string path = dir.file("unit.bag");
+    {
+      BagWriter w(path);
+      for (int k = 0; k < 200; ++k) {
+        const double t = kT0 + 0.01 * k;
+        RosMessage m = imuMessage(k);
+        m.set("linear_acceleration.x", 0.1 * unit);
+        m.set("linear_acceleration.y", 0.0);
+        m.set("linear_acceleration.z", 9.81 * unit);
+        w.write("/imu", "sensor_msgs/Imu", kImuDef, m, t, t);
+        if (k % 5 == 0) w.write("/odom", "nav_msgs/Odometry", kOdomDef, RosMessage{}, t, t);
+      }
+    }
+    if (unit == 0.5) {
+      try {
+        readBagDataset(*openBag(path), {});
+        ADD_FAILURE() << "a force of 4.9 m/s^2 was read";
+      } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("topic /imu: the mean specific force is 4.905"),
+                  std::string::npos)
+            << e.what();
+      }
+      continue;
+    }
+    const BagDataset d = readBagDataset(*openBag(path), {});
+    EXPECT_EQ(d.imu_accel_unit, unit < 1.0 ? "g" : "mg");
+    EXPECT_NEAR(d.imu[7].acc.z(), 9.81, 1e-9);
+    ASSERT_EQ(d.warnings.size(), 1u);
+    EXPECT_NE(d.warnings[0].find("linear_acceleration in " + d.imu_accel_unit), std::string::npos);
+  }
 }
 
 TEST(BagImport, RealHuskyAndJackalBags) {
@@ -194,6 +271,7 @@ TEST(BagImport, RealHuskyAndJackalBags) {
   for (const auto& s : husky.odom) speed += s.v / static_cast<double>(husky.odom.size());
   EXPECT_NEAR(speed, 0.9, 0.1);
   EXPECT_TRUE(husky.warnings.empty());
+  EXPECT_EQ(husky.imu_accel_unit, "m/s^2");
 
   const BagDataset jackal = readBagDataset(*openBag(kReal + "test2.bag"), {});
   EXPECT_EQ(jackal.imu.size(), 3061u);
