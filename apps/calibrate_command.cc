@@ -60,7 +60,6 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
       << std::setprecision(1) << run.data_duration_s << " s of data (" << std::setprecision(0)
       << (run.wall_time_s > 0 ? run.data_duration_s / run.wall_time_s : 0.0)
       << "x real time), files read in " << std::setprecision(3) << run.load_time_s << " s\n";
-  if (run.status != "ok") out << "  status: " << run.status << "\n";
   for (const std::string& w : run.warnings) out << "  warning: " << w << "\n";
   out.unsetf(std::ios::fixed);
 }
@@ -99,6 +98,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   outputs.commit();
   printCalibrationSummary(run, truth ? &truth->calib : nullptr, log);
   log << "  outputs: " << job.out << "/{calibration.csv, trajectory.csv, summary.json}\n";
+  if (run.status != "ok") log << "  status: " << run.status << "\n";  // last: what to trust
   return run;
 }
 

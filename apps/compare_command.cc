@@ -23,7 +23,7 @@ struct Row {
 
 }  // namespace
 
-void runCompare(const CompareJob& job, std::ostream& log) {
+bool runCompare(const CompareJob& job, std::ostream& log) {
   const std::string out = job.out.empty() ? job.data + "/giocal_compare" : job.out;
   const std::vector<std::string> files{"compare.csv", "ekf/summary.json", "fgo/summary.json"};
   if (!job.overwrite) {
@@ -139,6 +139,12 @@ void runCompare(const CompareJob& job, std::ostream& log) {
   outputs.commit();
   log << "outputs: " << out << "/{compare.csv, ekf/, fgo/}\n";
   log.unsetf(std::ios::fixed);
+  bool suspect = false;
+  for (const CalibrationRun& r : runs) {
+    if (r.status != "ok") log << "  " << r.estimator << " status: " << r.status << "\n";
+    suspect |= r.status.rfind("suspect", 0) == 0;
+  }
+  return suspect;
 }
 
 }  // namespace giocal

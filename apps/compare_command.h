@@ -19,6 +19,7 @@ struct CompareJob {
 
 /// Runs the EKF and the factor graph, writes each one's outputs into <out>/ekf and <out>/fgo and
 /// the comparison table into <out>/compare.csv, and prints the table.
-void runCompare(const CompareJob& job, std::ostream& log);
+/// True when either run's status is "suspect" (the command then exits 3).
+bool runCompare(const CompareJob& job, std::ostream& log);
 
 }  // namespace giocal

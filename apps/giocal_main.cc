@@ -161,8 +161,9 @@ int runCalibrateCommand(int argc, char** argv) {
   job.quiet = vm.count("quiet") != 0;
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
-  giocal::runCalibrate(job, std::cout);
-  return 0;
+  const giocal::CalibrationRun run = giocal::runCalibrate(job, std::cout);
+  // 3: the run finished but does not believe its answer (status "suspect: ..."; docs/commands.md).
+  return run.status.rfind("suspect", 0) == 0 ? 3 : 0;
 }
 
 int runCompareCommand(int argc, char** argv) {
@@ -184,8 +185,7 @@ int runCompareCommand(int argc, char** argv) {
   job.quiet = vm.count("quiet") != 0;
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
-  giocal::runCompare(job, std::cout);
-  return 0;
+  return giocal::runCompare(job, std::cout) ? 3 : 0;  // 3: a run does not believe its answer
 }
 
 int runReportCommand(int argc, char** argv) {

@@ -29,4 +29,26 @@ std::vector<std::string> rejectionShareWarnings(const CalibrationRun& run, bool 
   return out;
 }
 
+std::string suspectReason(const CalibrationRun& run, bool positions_only, bool loosely_coupled) {
+  const auto over_half = [](long part, long total) { return total > 0 && 2 * part > total; };
+  const auto of = [](long part, long total, const std::string& what) {
+    return std::to_string(part) + " of " + std::to_string(total) + " " + what;
+  };
+  const long odo = run.counter(Counter::kOdometerIntervals);
+  const long odo_rejected = run.counter(Counter::kOdometerRejected);
+  if (over_half(odo_rejected, odo))
+    return of(odo_rejected, odo, "odometer intervals rejected by the gates");
+  const long used = positions_only ? 3L * run.gnss_epochs : run.counter(Counter::kDdRows);
+  const long rejected = run.counter(Counter::kGnssRowsRejected);
+  if (over_half(rejected, used + rejected)) {
+    return of(rejected, used + rejected,
+              std::string(positions_only ? "GNSS position rows" : "double-difference GNSS rows") +
+                  " rejected by the gates");
+  }
+  const long unused = run.counter(Counter::kGnssEpochsUnused);
+  if (loosely_coupled && over_half(unused, unused + run.gnss_epochs))
+    return of(unused, unused + run.gnss_epochs, "position fixes updated nothing");
+  return "";
+}
+
 }  // namespace giocal

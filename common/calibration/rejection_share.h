@@ -18,4 +18,10 @@ namespace giocal {
 std::vector<std::string> rejectionShareWarnings(const CalibrationRun& run, bool positions_only,
                                                 double fraction = 0.5);
 
+/// Why a run's estimate has left its data, in a few words, or empty: more than half of its
+/// odometer intervals or GNSS rows rejected by the gates (`positions_only` as above), or with
+/// `loosely_coupled` more than half of its position fixes updating nothing. The run's status then
+/// says `suspect: <why>`.
+std::string suspectReason(const CalibrationRun& run, bool positions_only, bool loosely_coupled);
+
 }  // namespace giocal

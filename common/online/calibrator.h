@@ -55,6 +55,12 @@ class Calibrator {
   Calibrator(std::string estimator, const DatasetDescription& dataset,
              const Eigen::Vector3d& base_e, const CalibrationOptions& options, CoreFactory factory,
              RunSink* sink);
+  // The estimator cores hold references into the calibrator's buffers: neither copied nor moved
+  // (hold it by std::unique_ptr, as makeCalibrator returns it).
+  Calibrator(const Calibrator&) = delete;
+  Calibrator& operator=(const Calibrator&) = delete;
+  Calibrator(Calibrator&&) = delete;
+  Calibrator& operator=(Calibrator&&) = delete;
 
   /// IMU, odometer and position times are moved by the dataset's time_offsets here (the one
   /// place they are applied, for a replay and a robot alike).
@@ -73,7 +79,11 @@ class Calibrator {
   void finish();
 
   std::optional<CalibrationEstimate> calibration() const { return run_.latest; }
+  /// The navigation state in the local frame n: east-north-up at navOriginEcef(), which is set
+  /// at each (re-)initialization; nullopt before the first.
   std::optional<NavState> navState() const;
+  /// The origin of navState()'s frame n (ECEF, m); zero before the first initialization.
+  Eigen::Vector3d navOriginEcef() const { return origin_e_; }
   CalibratorHealth health() const;
   const CalibrationRun& run() const { return run_; }
 

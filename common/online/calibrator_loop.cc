@@ -339,6 +339,9 @@ void Calibrator::finish() {
   }
   for (const std::string& w : rejectionShareWarnings(run_, positionsOnly())) run_.warn(w);
   warnAboutUnusedGnss();
+  // `ok` means the run believes its answer; one whose estimate has left its data does not.
+  const std::string suspect = suspectReason(run_, positionsOnly(), options_.loosely_coupled);
+  if (run_.status == "ok" && !suspect.empty()) run_.status = "suspect: " + suspect;
   if (!dataset_.odom_noise.measures_yaw_rate) {
     const CalibrationPrior& p = original_.initial_calibration;
     run_.warn(

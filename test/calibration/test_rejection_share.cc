@@ -45,5 +45,18 @@ TEST(RejectionShare, PositionFixesCountThreeRowsEach) {
   EXPECT_NE(w[0].find("330 of 630 GNSS position rows"), std::string::npos) << w[0];
 }
 
+// The status a run ends with: suspect once more than half of a kind of data was turned away.
+TEST(RejectionShare, MoreThanHalfRejectedOrUnusedMakesTheRunSuspect) {
+  EXPECT_EQ(suspectReason(runWith(1237, 28, 21037, 24), false, false), "");
+  EXPECT_EQ(suspectReason(runWith(1237, 1102, 7311, 13725), false, false),
+            "1102 of 1237 odometer intervals rejected by the gates");
+  EXPECT_EQ(suspectReason(runWith(100, 0, 100, 101), false, false),
+            "101 of 201 double-difference GNSS rows rejected by the gates");
+  CalibrationRun lc = runWith(100, 0, 0, 0, 378);
+  lc.count(Counter::kGnssEpochsUnused, 2325);
+  EXPECT_EQ(suspectReason(lc, true, true), "2325 of 2703 position fixes updated nothing");
+  EXPECT_EQ(suspectReason(lc, false, false), "");  // not the LC scheme: not counted
+}
+
 }  // namespace
 }  // namespace giocal

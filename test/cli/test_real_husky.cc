@@ -100,15 +100,23 @@ TEST(RealHusky, FixesTheGateRefusesAreNamedWithWhatToChange) {
     SCOPED_TRACE(est);
     const std::string out = dir.file(est);
     log.clear();
-    ASSERT_EQ(run("calibrate --data " + data + " --gnss lc --pos " + pos + " --estimator " + est +
-                      " --quiet --out " + out,
-                  &log),
-              0)
-        << log;
+    const int code = run("calibrate --data " + data + " --gnss lc --pos " + pos + " --estimator " +
+                             est + " --quiet --out " + out,
+                         &log);
     const nlohmann::json s = summary(out);
     const long unused = s["counters"]["gnss_epochs_unused"].get<long>();
     const long used = s["gnss_epochs"].get<long>();
     EXPECT_GT(unused, (unused + used) / 5);
+    // More than half unused: the run does not believe its answer, says so last, and exits 3.
+    const std::string status = s["status"].get<std::string>();
+    if (2 * unused > unused + used) {
+      EXPECT_EQ(code, 3) << log;
+      EXPECT_EQ(status.rfind("suspect: ", 0), 0u) << status;
+      const std::string last = log.substr(log.rfind("\n", log.size() - 2) + 1);
+      EXPECT_NE(last.find("status: suspect: "), std::string::npos) << last;
+    } else {
+      EXPECT_EQ(code, 0) << log;
+    }
     bool named = false;
     for (const auto& w : s["warnings"]) {
       const std::string text = w.get<std::string>();

@@ -1,10 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <type_traits>
 #include <vector>
 
 #include "common/online/convergence.h"
 #include "common/online/latency_histogram.h"
 #include "common/online/reorder_buffer.h"
+#include "replay/estimator_factory.h"
 
 namespace giocal {
 namespace {
@@ -73,6 +75,20 @@ TEST(ConvergenceMonitor, ConvergesWhenTheSigmaIsSmallAndTheValueSteadyOverTheTim
   const auto lost = m.update(estimate(41, 0.2, 5e-3));
   ASSERT_EQ(lost.size(), 1u);
   EXPECT_FALSE(lost[0].converged);
+}
+
+// The estimator cores hold references into the calibrator's buffers: a copy or a move would
+// leave them dangling, so neither compiles. The frame of navState() has its origin exposed.
+static_assert(!std::is_copy_constructible_v<Calibrator> &&
+                  !std::is_move_constructible_v<Calibrator>,
+              "Calibrator must be neither copied nor moved");
+static_assert(!std::is_copy_assignable_v<Calibrator> && !std::is_move_assignable_v<Calibrator>,
+              "Calibrator must be neither copied nor moved");
+TEST(Calibrator, NoNavigationStateOrOriginBeforeTheFirstInitialization) {
+  const auto cal = makeCalibrator("ekf", DatasetDescription{}, Eigen::Vector3d::Zero(),
+                                  CalibrationOptions{}, {}, nullptr);
+  EXPECT_FALSE(cal->navState().has_value());
+  EXPECT_EQ(cal->navOriginEcef(), Eigen::Vector3d::Zero());
 }
 
 TEST(LatencyHistogram, PercentilesWithinTheBinWidth) {
