@@ -159,6 +159,7 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     s_.covariance() = prior.covariance();
     r = kalmanUpdate(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
                      &workspace_);
+    numerical_failures_ += r.numerical_failure;
     if (!r.accepted) return r;  // s_ holds the prior again
     s_.correct(r.dx);
     if (r.dx.size() && (r.dx - delta).norm() < 1e-9) break;
@@ -168,6 +169,7 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
 
 UpdateResult CalibrationFilter::updateLinearized(const MeasurementRows& rows, double chi2_gate) {
   const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
+  numerical_failures_ += r.numerical_failure;
   if (r.accepted) s_.correct(r.dx);
   return r;
 }
@@ -306,7 +308,7 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
       const UpdateResult r =
           update(*model, keys, chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
                  options_.odometer_iterations);
-      step.rejected = !r.accepted;
+      step.rejected = !r.accepted && !r.numerical_failure;  // a failure is not the gate's
       odometer_rejected_in_row_ =
           step.rejected && !step.reopened ? odometer_rejected_in_row_ + 1 : 0;
       restartOdometerInterval(sample);

@@ -75,6 +75,15 @@ class CalibrationFilter {
   /// One Kalman update from rows already linearized at the current state (a caller that screened
   /// them need not linearize again); held states as in update().
   UpdateResult updateLinearized(const MeasurementRows& rows, double chi2_gate);
+  /// Updates that failed numerically (not gated: UpdateResult::numerical_failure) since the last
+  /// call, with those a caller counted (a LAMBDA search on a covariance that is not positive
+  /// definite).
+  long takeNumericalFailures() {
+    const long n = numerical_failures_;
+    numerical_failures_ = 0;
+    return n;
+  }
+  void countNumericalFailure() { ++numerical_failures_; }
 
   /// The LC scheme's update: propagates to the solution's time and applies it through the antenna
   /// lever arm (weighted by options.lc), gated at options.chi2_probability; false if gated out.
@@ -132,6 +141,7 @@ class CalibrationFilter {
   PoseRates odo_rates_;  // at the interval's ends, for the odometer's delay (when estimated)
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
   int odometer_rejected_in_row_ = 0;
+  long numerical_failures_ = 0;
   KalmanWorkspace workspace_;
 };
 

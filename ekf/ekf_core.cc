@@ -29,6 +29,7 @@ EkfCore::EkfCore(const CalibrationOptions& options, const CalibrationInputs& sen
 
 void EkfCore::odometer(const OdomSample& sample, CalibrationRun& run) {
   const OdometerStep step = filter_.updateOdometer(sample);
+  run.count(Counter::kNumericalFailures, filter_.takeNumericalFailures());
   run.count(Counter::kOdometerIntervals, step.interval);
   run.count(Counter::kOdometerRejected, step.rejected);
   if (!step.reopened) return;
@@ -47,6 +48,7 @@ EpochOutcome EkfCore::position(double t, CalibrationRun& run) {
   const PositionFix* fix = fixAt(sensors_.positions, t, kPositionTolerance);
   if (!fix) return out;
   out.used = filter_.updatePosition(*fix);
+  run.count(Counter::kNumericalFailures, filter_.takeNumericalFailures());
   run.count(Counter::kGnssRowsRejected, out.used ? 0 : 3);
   out.diverged = !finiteState(filter_.state());
   if (out.diverged) return out;
@@ -59,6 +61,7 @@ EpochOutcome EkfCore::position(double t, CalibrationRun& run) {
 EpochOutcome EkfCore::gnss(const ObsEpoch& rover, const ObsEpoch& base, CalibrationRun& run) {
   if (options_.loosely_coupled) return position(rover.t, run);
   const GnssEpochReport rep = gnss_.process(filter_, rover, base);
+  run.count(Counter::kNumericalFailures, filter_.takeNumericalFailures());
   run.count(Counter::kDdRows, rep.dd_rows);
   run.count(Counter::kGnssRowsRejected, rep.rejected_rows);
   run.count(Counter::kCodeOutliers, rep.code_outliers);

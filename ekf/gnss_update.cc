@@ -299,6 +299,7 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
     fix = giocal::resolveAmbiguities(a_f, Q_f, lowestElevationFirst(el_f), lambda);
   } catch (const std::invalid_argument&) {
     fix = {};  // float covariance not positive definite: none of these fixed this epoch
+    f.countNumericalFailure();
   }
   rep.ratio = fix.ratio;
   if (!fix.fixed) {

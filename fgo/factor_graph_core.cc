@@ -7,6 +7,7 @@
 #include "common/gnss/spp.h"
 #include "common/imu/gyro_mean.h"
 #include "common/imu/imu_preintegration.h"
+#include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "common/models/heading_change_model.h"
 #include "common/models/imu_preintegration_model.h"
@@ -297,14 +298,14 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   }
   epochs_.push_back(e);
   FgoEpoch& cur = epochs_.back();
-  w_.solve(fo_.max_iterations);
-  for (int r = 0; r < fo_.max_rejections && rejectWorstRow(cur); ++r) w_.solve(fo_.max_iterations);
+  solveWindow();
+  for (int r = 0; r < fo_.max_rejections && rejectWorstRow(cur); ++r) solveWindow();
   if (fix && rejectPosition(cur, *fix)) {
     fix = nullptr;
-    w_.solve(fo_.max_iterations);
+    solveWindow();
   }
-  if (leaveOutSlips(epochs_[epochs_.size() - 2], cur)) w_.solve(fo_.max_iterations);
-  if (rejectOdometer(cur)) w_.solve(fo_.max_iterations);
+  if (leaveOutSlips(epochs_[epochs_.size() - 2], cur)) solveWindow();
+  if (rejectOdometer(cur)) solveWindow();
   EpochOutcome out;
   out.used = !o_.loosely_coupled || fix;
   out.fixed =
@@ -316,6 +317,19 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   if (static_cast<int>(epochs_.size()) > fo_.window) marginalizeOldest();
   run_ = nullptr;
   return out;
+}
+
+void FactorGraphCore::solveWindow() {
+  const SlidingWindow::SolveReport r = w_.solve(fo_.max_iterations);
+  if (r.usable && r.failure.empty()) return;
+  run_->count(Counter::kNumericalFailures);
+  if (run_->counter(Counter::kNumericalFailures) == 1) {
+    run_->warn("the factor graph's window solve failed numerically at t=" +
+               timeText(epochs_.empty() ? 0.0 : epochs_.back().t) + " (" +
+               (r.failure.empty() ? std::string("not usable") : r.failure) +
+               "); the window keeps its last good values (further ones are counted in "
+               "numerical_failures)");
+  }
 }
 
 bool FactorGraphCore::rejectPosition(const FgoEpoch& e, const PositionFix& fix) {

@@ -102,6 +102,9 @@ class FactorGraphCore : public EstimatorCore {
   /// |residual| / sigma of each of the epoch's code or phase rows at the current values.
   Eigen::VectorXd normalizedRowResiduals(const FgoEpoch& e, bool phase) const;
   bool rejectWorstRow(FgoEpoch& e);
+  /// Solves the window; a solve that fails numerically is counted (numerical_failures), once
+  /// named in the warnings.
+  void solveWindow();
   bool resolve(FgoEpoch& e);
 
   const CalibrationInputs& in_;

@@ -228,6 +228,7 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
   try {
     fix = resolveAmbiguities(a, Qa, drop, o_.lambda);
   } catch (const std::invalid_argument&) {
+    run_->count(Counter::kNumericalFailures);  // the float covariance is not positive definite
     return false;
   }
   if (!fix.fixed) return false;
@@ -248,12 +249,12 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
          0.0,
          tag});
   }
-  w_.solve(fo_.max_iterations);
+  solveWindow();
   // Validate by the fixed solution's DD phase residuals, not by the cost (the IMU and odometer
   // factors make any fix raise it).
   if (normalizedRowResiduals(e, true).maxCoeff() > o_.max_fix_residual) {
     w_.removeFactors(tag);
-    w_.solve(fo_.max_iterations);
+    solveWindow();
     run_->count(Counter::kFixesRejected);
     return false;
   }

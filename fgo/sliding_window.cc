@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "common/math/null_space.h"
 #include "common/math/whitening.h"
 #include "fgo/marginal_prior_model.h"
 #include "fgo/model_cost_function.h"
@@ -176,7 +177,7 @@ SlidingWindow::SolveReport SlidingWindow::solveWithCeres(int max_iterations,
     if (v.block.kind == BlockKind::kRotation) v.value.normalize();
   }
   return {summary.IsSolutionUsable(), static_cast<int>(summary.iterations.size()),
-          summary.final_cost};
+          summary.final_cost, summary.IsSolutionUsable() ? "" : summary.message};
 }
 
 std::map<StateKey, int> SlidingWindow::tangentOffsets(const std::vector<StateKey>& order,
@@ -344,18 +345,24 @@ void SlidingWindow::marginalize(const std::vector<StateKey>& names) {
     for (const StateKey& v : m_order) nm += vars_.at(v).block.tangentSize();
     const long nk = H.rows() - nm;
     // Schur complement with a pseudo-inverse of the marginalized block (it may be singular along
-    // directions nothing observed).
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(H.topLeftCorner(nm, nm));
-    const double tol_m = 1e-10 * std::max(1.0, em.eigenvalues().cwiseAbs().maxCoeff());
+    // directions nothing observed). Both eigen-decompositions are of the Jacobi-scaled matrix
+    // (unit diagonal): the Hessian mixes metres, radians and cycles, and a threshold relative to
+    // its largest eigenvalue would drop well-observed directions of small units.
+    const Eigen::VectorXd dm = jacobiScale(H.topLeftCorner(nm, nm));
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> em(
+        dm.asDiagonal() * H.topLeftCorner(nm, nm) * dm.asDiagonal());
+    const double tol_m = kNullEigenvalue * std::max(1.0, em.eigenvalues().cwiseAbs().maxCoeff());
     const Eigen::VectorXd inv =
         em.eigenvalues().unaryExpr([&](double l) { return l > tol_m ? 1.0 / l : 0.0; });
-    const Eigen::MatrixXd Hmm_inv =
-        em.eigenvectors() * inv.asDiagonal() * em.eigenvectors().transpose();
+    const Eigen::MatrixXd Hmm_inv = dm.asDiagonal() * em.eigenvectors() * inv.asDiagonal() *
+                                    em.eigenvectors().transpose() * dm.asDiagonal();
     const Eigen::MatrixXd Hkm = H.bottomLeftCorner(nk, nm);
-    const Eigen::MatrixXd L = H.bottomRightCorner(nk, nk) - Hkm * Hmm_inv * Hkm.transpose();
+    Eigen::MatrixXd L = H.bottomRightCorner(nk, nk) - Hkm * Hmm_inv * Hkm.transpose();
+    L = 0.5 * (L + L.transpose());
     const Eigen::VectorXd g = b.tail(nk) - Hkm * Hmm_inv * b.head(nm);
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ek(0.5 * (L + L.transpose()));
-    const double tol_k = 1e-10 * std::max(1.0, ek.eigenvalues().cwiseAbs().maxCoeff());
+    const Eigen::VectorXd dk = jacobiScale(L);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> ek(dk.asDiagonal() * L * dk.asDiagonal());
+    const double tol_k = kNullEigenvalue * std::max(1.0, ek.eigenvalues().cwiseAbs().maxCoeff());
     std::vector<long> kept;
     for (long i = 0; i < nk; ++i) {
       if (ek.eigenvalues()[i] > tol_k) kept.push_back(i);
@@ -363,11 +370,12 @@ void SlidingWindow::marginalize(const std::vector<StateKey>& names) {
     if (!kept.empty()) {
       Eigen::MatrixXd J(static_cast<long>(kept.size()), nk);
       Eigen::VectorXd r0(static_cast<long>(kept.size()));
+      // L = S^-1 U diag(l) U^T S^-1 with S = diag(dk): rows sqrt(l) u^T S^-1, and J^T r0 = g.
       for (size_t a = 0; a < kept.size(); ++a) {
         const double l = ek.eigenvalues()[kept[a]];
         const Eigen::VectorXd u = ek.eigenvectors().col(kept[a]);
-        J.row(static_cast<long>(a)) = std::sqrt(l) * u.transpose();
-        r0[static_cast<long>(a)] = u.dot(g) / std::sqrt(l);
+        J.row(static_cast<long>(a)) = std::sqrt(l) * u.cwiseQuotient(dk).transpose();
+        r0[static_cast<long>(a)] = u.dot(dk.cwiseProduct(g)) / std::sqrt(l);
       }
       std::vector<StateBlock> blocks;
       Eigen::VectorXd x_lin(0);

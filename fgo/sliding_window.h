@@ -65,6 +65,9 @@ class SlidingWindow {
     bool usable = false;
     int iterations = 0;
     double final_cost = 0.0;
+    // Why the solve ended short of converging, when it failed numerically: "non-finite cost",
+    // "non-finite step", "damping exhausted", or Ceres' message; empty otherwise.
+    std::string failure;
   };
   /// Stops when a step changes the cost by less than `function_tolerance` of it (Ceres' default,
   /// 1e-6), when the own solver's next step is predicted to gain less than that (asked first of

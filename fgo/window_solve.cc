@@ -7,12 +7,17 @@
 #include <limits>
 #include <stdexcept>
 
+#include "common/math/null_space.h"
 #include "common/math/rotation.h"
 #include "fgo/sliding_window.h"
 
 namespace giocal {
 
 namespace {
+
+// Levenberg damping beyond which a step that raises the cost is given up: the values stay at the
+// last ones that lowered it, and the solve reports it.
+constexpr double kMaxDamping = 1e2;
 
 /// CHOLMOD's simplicial LL^T with its factor in reach, for solves with L alone.
 struct SimplicialLlt : Eigen::CholmodSimplicialLLT<Eigen::SparseMatrix<double>> {
@@ -96,13 +101,25 @@ struct SlidingWindow::Linearization {
       cholmod_free_dense(&Y, &cm);
       if (C.size() && C.allFinite()) return 0.5 * (C + C.transpose());
     }
+    // H singular: the pseudo-inverse holds the observed part. Asked for the covariance itself,
+    // a direction nothing observes gets an infinite variance (not the pseudo-inverse's 0, which
+    // would read as perfectly known); along G (a quadratic form of the observed part) it stays.
     Eigen::MatrixXd E = Eigen::MatrixXd::Zero(n, k);
     for (long j = 0; j < k; ++j) E(idx[j], j) = 1.0;
     const Eigen::MatrixXd X = solve(E);
     Eigen::MatrixXd C(k, k);
     for (long r = 0; r < k; ++r) C.row(r) = X.row(idx[r]);
     C = 0.5 * (C + C.transpose());
-    return G ? Eigen::MatrixXd(G->transpose() * C * *G) : C;
+    if (G) return G->transpose() * C * *G;
+    const Eigen::MatrixXd H_full = Eigen::MatrixXd(H).selfadjointView<Eigen::Lower>();
+    const std::vector<int> none = unobservedIndices(H_full, idx);
+    for (long j = 0; j < k; ++j) {
+      if (std::find(none.begin(), none.end(), idx[j]) == none.end()) continue;
+      C.row(j).setZero();
+      C.col(j).setZero();
+      C(j, j) = std::numeric_limits<double>::infinity();
+    }
+    return C;
   }
   /// The Gauss-Newton step with the held components at zero: the unconstrained step corrected
   /// along H^-1 E (E the held columns), so that one factorization of the whole H serves the
@@ -323,14 +340,20 @@ SlidingWindow::SolveReport SlidingWindow::solve(int max_iterations, double funct
 SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
                                                            double function_tolerance) {
   std::shared_ptr<Linearization> lin = linearizeWindow();
-  SolveReport report{std::isfinite(lin->cost), 0, lin->cost};
-  if (!report.usable) return report;
+  SolveReport report{std::isfinite(lin->cost), 0, lin->cost, ""};
+  if (!report.usable) {
+    report.failure = "non-finite cost";
+    return report;
+  }
   std::vector<std::pair<StateKey, Eigen::VectorXd>> saved;
   for (const auto& [name, at] : lin->plan->offset) saved.push_back({name, vars_.at(name).value});
   double damping = 0.0;
   for (int it = 0; it < max_iterations; ++it) {
     const Eigen::VectorXd dx = lin->step(damping);
-    if (!dx.allFinite()) break;
+    if (!dx.allFinite()) {
+      report.failure = "non-finite step";
+      break;
+    }
     // A step the quadratic model says gains less than the tolerance is not taken: the solve ends
     // here, and the factorization just made serves the covariances (no relinearization).
     const Eigen::VectorXd H_dx = lin->H.selfadjointView<Eigen::Lower>() * dx;
@@ -360,7 +383,11 @@ SlidingWindow::SolveReport SlidingWindow::solveGaussNewton(int max_iterations,
       ++version_;
       lin->version = version_;
       damping = damping == 0.0 ? 1e-2 : 10.0 * damping;
-      if (converged || damping > 1e2) break;
+      if (converged) break;
+      if (damping > kMaxDamping) {
+        report.failure = "damping exhausted";
+        break;
+      }
       continue;
     }
     const std::shared_ptr<Linearization> previous = lin;

@@ -48,6 +48,8 @@ const char* counterName(Counter c) {
       return "calibration_jumps";
     case Counter::kOdometerSlips:
       return "odometer_slips";
+    case Counter::kNumericalFailures:
+      return "numerical_failures";
     case Counter::kSize:
       break;
   }

@@ -26,6 +26,7 @@ enum class Counter {
   kGnssGaps,             // rover epochs more than gnss_gap_warning_s after the previous one
   kCalibrationJumps,     // epochs at which the calibration moved beyond its chi-square gate
   kOdometerSlips,        // odometer samples left out by the factor graph's slip check
+  kNumericalFailures,    // updates, solves or LAMBDA searches that failed numerically
   kSize
 };
 

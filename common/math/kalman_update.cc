@@ -7,6 +7,10 @@
 
 namespace giocal {
 
+namespace {
+constexpr double kDowndateTolerance = 1e-9;  // of a prior variance, a negative result may reach
+}  // namespace
+
 UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
                           const std::vector<int>& held, KalmanWorkspace* workspace) {
   UpdateResult out;
@@ -25,7 +29,10 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   S.noalias() = W * H.transpose();
   S += rows.R;
   const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(S);  // in place: S becomes its factor
-  if (llt.info() != Eigen::Success) return out;
+  if (llt.info() != Eigen::Success) {
+    out.numerical_failure = true;
+    return out;
+  }
   const Eigen::VectorXd innovation = -rows.residual;
   const Eigen::VectorXd s_innovation = llt.solve(innovation);
   out.nis = innovation.dot(s_innovation);
@@ -39,6 +46,10 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   // M = W^T W with W = L^-1 (PH^T)^T (S = L L^T): one triangular solve and a symmetric rank-m
   // update of P's lower triangle, half the work of forming K0 and K0 (PH^T)^T.
   llt.matrixL().solveInPlace(W);
+  // The downdate in floating point can overshoot a variance the update nearly zeroes: checked
+  // on the diagonal, and undone (from this copy) rather than kept.
+  Eigen::Map<Eigen::MatrixXd> P_before = ws.matrix(KalmanWorkspace::kPBefore, n, n);
+  P_before = P;
   Eigen::MatrixXd P_held(held.size(), held.size());
   for (size_t a = 0; a < held.size(); ++a)
     for (size_t b = 0; b < held.size(); ++b) P_held(a, b) = P(held[a], held[b]);
@@ -46,6 +57,15 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   P.triangularView<Eigen::StrictlyUpper>() = P.transpose();
   for (size_t a = 0; a < held.size(); ++a)
     for (size_t b = 0; b < held.size(); ++b) P(held[a], held[b]) = P_held(a, b);
+  // Beyond rounding (a variance the update nearly zeroes may end a few ulps below zero).
+  const bool overshot =
+      (P.diagonal().array() < -kDowndateTolerance * P_before.diagonal().array().abs()).any();
+  if (overshot || !P.diagonal().allFinite()) {
+    P = P_before;
+    out.dx.resize(0);
+    out.numerical_failure = true;
+    return out;
+  }
   out.accepted = true;
   return out;
 }

@@ -1,4 +1,5 @@
-// kalmanUpdate: the EKF measurement update (Joseph form) with an innovation chi-square gate.
+// kalmanUpdate: the EKF measurement update (the optimal-gain covariance downdate P - K S K^T,
+// equal to the Joseph form at that gain, checked) with an innovation chi-square gate.
 #pragma once
 
 #include <Eigen/Core>
@@ -13,13 +14,16 @@ struct UpdateResult {
   Eigen::VectorXd dx;  // error-state correction to apply with the state's box-plus
   double nis = 0.0;    // normalized innovation squared
   bool accepted = false;
+  // Not a gate's rejection: S was not positive definite, or the downdate left P with a negative
+  // or non-finite variance (P is then restored). Counted apart (numerical_failures).
+  bool numerical_failure = false;
 };
 
 /// Updates P in place and returns the correction; rejects (P unchanged) when the NIS exceeds
-/// `chi2_gate` (pass infinity to disable the gate). Error-state indices in `held` are consider
-/// states (Schmidt): their gain rows are zero, so neither they nor their variance change, while
-/// their uncertainty still enters the update of the others. `workspace` (optional) keeps the
-/// temporaries' storage between updates.
+/// `chi2_gate` (pass infinity to disable the gate), or fails (P unchanged, numerical_failure).
+/// Error-state indices in `held` are consider states (Schmidt): their gain rows are zero, so
+/// neither they nor their variance change, while their uncertainty still enters the update of the
+/// others. `workspace` (optional) keeps the temporaries' storage between updates.
 UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
                           const std::vector<int>& held = {}, KalmanWorkspace* workspace = nullptr);
 

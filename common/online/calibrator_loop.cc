@@ -339,6 +339,12 @@ void Calibrator::finish() {
   }
   for (const std::string& w : rejectionShareWarnings(run_, positionsOnly())) run_.warn(w);
   warnAboutUnusedGnss();
+  if (const long n = run_.counter(Counter::kNumericalFailures); n > 0) {
+    run_.warn(std::to_string(n) +
+              " updates, solves or ambiguity searches failed numerically (counter "
+              "numerical_failures; not gate rejections): the estimator skipped them, and the "
+              "calibration rests on the rest");
+  }
   // `ok` means the run believes its answer; one whose estimate has left its data does not.
   const std::string suspect = suspectReason(run_, positionsOnly(), options_.loosely_coupled);
   if (run_.status == "ok" && !suspect.empty()) run_.status = "suspect: " + suspect;

@@ -176,5 +176,35 @@ TEST(KalmanUpdate, HeldStatesKeepValueAndVarianceAndTheUpdateIsJoseph) {
   EXPECT_LT((P2 - (P0 - K0 * S * K0.transpose())).norm(), 1e-12);
 }
 
+// A numerical failure is not a gate's rejection: an innovation covariance that is not positive
+// definite, or a downdate that leaves a negative variance (here from a covariance that is not
+// positive semidefinite), fails with P unchanged and says so; a gated row only rejects.
+TEST(KalmanUpdate, NumericalFailuresAreToldApartFromRejectionsAndLeavePUnchanged) {
+  MeasurementRows rows;
+  rows.H = Eigen::RowVector2d(1.0, 0.0);
+  rows.residual = Eigen::VectorXd::Constant(1, 0.1);
+  rows.R = Eigen::MatrixXd::Constant(1, 1, -5.0);  // S = 1 - 5 < 0
+  Eigen::MatrixXd P = Eigen::Matrix2d::Identity();
+  UpdateResult r = kalmanUpdate(P, rows, 1e9);
+  EXPECT_FALSE(r.accepted);
+  EXPECT_TRUE(r.numerical_failure);
+  EXPECT_EQ(P, Eigen::MatrixXd(Eigen::Matrix2d::Identity()));
+
+  rows.R(0, 0) = 0.01;
+  Eigen::MatrixXd indefinite(2, 2);
+  indefinite << 1.0, 2.0, 2.0, 1.0;  // eigenvalues 3 and -1: x2's variance goes 1 - 4/1.01 < 0
+  P = indefinite;
+  r = kalmanUpdate(P, rows, 1e9);
+  EXPECT_FALSE(r.accepted);
+  EXPECT_TRUE(r.numerical_failure);
+  EXPECT_EQ(P, indefinite);
+
+  P = Eigen::Matrix2d::Identity();
+  rows.residual(0) = 100.0;  // far outside the gate
+  r = kalmanUpdate(P, rows, 9.0);
+  EXPECT_FALSE(r.accepted);
+  EXPECT_FALSE(r.numerical_failure);
+}
+
 }  // namespace
 }  // namespace giocal
