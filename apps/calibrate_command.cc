@@ -9,7 +9,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/fix_audit.h"
 #include "common/math/rotation.h"
-#include "replay/config.h"
+#include "options/giocal_config.h"
 #include "replay/estimator_factory.h"
 #include "replay/replay.h"
 

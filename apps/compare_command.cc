@@ -10,7 +10,7 @@
 #include "apps/live_run_writer.h"
 #include "common/calibration/fix_audit.h"
 #include "common/math/rotation.h"
-#include "replay/config.h"
+#include "options/giocal_config.h"
 #include "replay/replay.h"
 
 namespace giocal {

@@ -11,9 +11,9 @@
 #include "common/io/output_set.h"
 #include "common/io/progress_line.h"
 #include "common/math/rotation.h"
-#include "replay/calibration_source.h"
-#include "replay/config.h"
-#include "replay/dead_reckoning.h"
+#include "evaluation/calibration_source.h"
+#include "options/giocal_config.h"
+#include "evaluation/dead_reckoning.h"
 
 namespace giocal {
 namespace {

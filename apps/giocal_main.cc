@@ -20,7 +20,7 @@
 #include "common/io/data_error.h"
 #include "common/io/sensor_logs.h"
 #include "common/io/tum_trajectory.h"
-#include "replay/config.h"
+#include "options/giocal_config.h"
 
 namespace po = boost::program_options;
 

@@ -43,7 +43,7 @@
 #include "common/io/progress_line.h"
 #include "common/math/rotation.h"
 #include "common/online/run_sink.h"
-#include "replay/config.h"
+#include "options/giocal_config.h"
 #include "replay/estimator_factory.h"
 #include "replay/replay.h"
 #include "sim/simulator.h"

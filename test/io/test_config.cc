@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "common/io/data_error.h"
-#include "replay/config.h"
+#include "options/giocal_config.h"
 #include "temp_dir.h"
 
 namespace giocal {

@@ -9,8 +9,8 @@
 #include "common/calibration/calibration_inputs.h"
 #include "common/io/sensor_logs.h"
 #include "common/math/rotation.h"
-#include "replay/ideal_imu.h"
-#include "replay/observability.h"
+#include "evaluation/ideal_imu.h"
+#include "evaluation/observability.h"
 #include "sim/simulator.h"
 #include "temp_dir.h"
 

@@ -1,4 +1,4 @@
-#include "replay/config.h"
+#include "options/giocal_config.h"
 
 #include "common/io/yaml_fields.h"
 

@@ -1,4 +1,4 @@
-#include "replay/calibration_source.h"
+#include "evaluation/calibration_source.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "replay/dead_reckoning.h"
+#include "evaluation/dead_reckoning.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "replay/ideal_imu.h"
+#include "evaluation/ideal_imu.h"
 
 #include <optional>
 

@@ -1,4 +1,4 @@
-#include "replay/observability.h"
+#include "evaluation/observability.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -12,7 +12,7 @@
 #include "common/models/state_block.h"
 #include "ekf/calibration_filter.h"
 #include "ekf/imu_propagation.h"
-#include "replay/ideal_imu.h"
+#include "evaluation/ideal_imu.h"
 
 namespace giocal {
 namespace {
