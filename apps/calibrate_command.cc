@@ -83,17 +83,18 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
     }
   }
   replay.stop = job.stop;
+  const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   OutputSet outputs(job.out);
-  const auto span = datasetTimeSpan(job.data);
+  const auto span = data.imu_span;
   ProgressLine progress("calibrate " + job.estimator, span.first, span.second, job.quiet);
   LiveRunWriter writer(outputs, "", job.estimator, log, &progress);
   // Where the dataset has a truth, each fixed epoch is checked against it as the run goes.
-  const std::unique_ptr<FixAudit> audit = fixAuditOf(job.data, &writer);
+  const std::unique_ptr<FixAudit> audit = fixAuditOf(data, &writer);
   CalibrationRun run =
-      replayFolder(job.data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
+      replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
   if (audit) audit->addTo(run);
   progress.clear();
-  const std::optional<TruthCalibration> truth = readFolderTruth(job.data);
+  const std::optional<TruthCalibration>& truth = data.truth;
   writer.finish(run, truth ? &truth->calib : nullptr);
   outputs.commit();
   printCalibrationSummary(run, truth ? &truth->calib : nullptr, log);

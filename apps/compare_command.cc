@@ -41,19 +41,20 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
   replay.positions = job.positions;
   replay.options.loosely_coupled = !job.positions.empty();
   replay.stop = job.stop;
+  const DatasetFolder data = openDatasetFolder(job.data);  // once for both runs
   OutputSet outputs(out);
-  const std::optional<TruthCalibration> truth_file = readFolderTruth(job.data);
+  const std::optional<TruthCalibration>& truth_file = data.truth;
   const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
   CalibrationRun runs[2];
   const char* estimators[2] = {"ekf", "fgo"};
-  const auto span = datasetTimeSpan(job.data);
+  const auto span = data.imu_span;
   for (int a = 0; a < 2; ++a) {
     replay.estimator = estimators[a];
     ProgressLine progress(std::string("compare ") + estimators[a], span.first, span.second,
                           job.quiet);
     LiveRunWriter writer(outputs, std::string(estimators[a]) + "/", estimators[a], log, &progress);
-    const std::unique_ptr<FixAudit> audit = fixAuditOf(job.data, &writer);
-    runs[a] = replayFolder(job.data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
+    const std::unique_ptr<FixAudit> audit = fixAuditOf(data, &writer);
+    runs[a] = replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
     if (audit) audit->addTo(runs[a]);
     progress.clear();
     writer.finish(runs[a], truth);

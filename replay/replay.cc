@@ -99,15 +99,13 @@ std::vector<std::string> diagnoseFolder(const DatasetDescription& d, double max_
 
 }  // namespace
 
-std::optional<TruthCalibration> readFolderTruth(const std::string& folder) {
-  const std::string truth = folder + "/truth_calib.yaml";
-  if (!std::filesystem::exists(truth)) return std::nullopt;
-  return readTruthCalibration(truth);
+CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink) {
+  return replayFolder(openDatasetFolder(folder), job, sink);
 }
 
-CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink) {
+CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, RunSink* sink) {
   const auto t0 = std::chrono::steady_clock::now();
-  const DatasetDescription d = readDatasetDescription(folder);
+  const DatasetDescription& d = data.description;
   // Without raw GNSS the LC scheme's solutions are the only GNSS (an imported bag's gnss.pos).
   const bool raw = !d.rover_obs.empty() || job.positions.empty();
   if (raw) requireRawGnss(d);

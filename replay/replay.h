@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/calibration/calibration_inputs.h"
+#include "common/io/dataset_folder.h"
 #include "common/io/stop_request.h"
 #include "common/online/calibrator.h"
 #include "fgo/fgo_options.h"
@@ -32,12 +33,11 @@ struct ReplayJob {
 /// Reads the folder's files sample by sample while calibrating (memory does not grow with the
 /// log). run.load_time_s is the time spent reading. Throws DataError for bad files (naming the
 /// file and line) and std::runtime_error when no initial state is ever found.
+CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, RunSink* sink);
+/// The same, the folder opened here.
 CalibrationRun replayFolder(const std::string& folder, const ReplayJob& job, RunSink* sink);
 
 /// The same from loaded inputs.
 CalibrationRun replayInputs(const CalibrationInputs& in, const ReplayJob& job, RunSink* sink);
-
-/// The truth calibration of a dataset folder (truth_calib.yaml), when it has one.
-std::optional<TruthCalibration> readFolderTruth(const std::string& folder);
 
 }  // namespace giocal

@@ -82,13 +82,10 @@ void FixAudit::addTo(CalibrationRun& run) const {
   run.warn(text);
 }
 
-std::unique_ptr<FixAudit> fixAuditOf(const std::string& folder, RunSink* next) {
-  const DatasetDescription d = readDatasetDescription(folder);
-  if (d.truth.empty() || !std::filesystem::exists(d.pathOf(d.truth))) return nullptr;
-  const std::string scenes = folder + "/scenes.csv";
-  return std::make_unique<FixAudit>(
-      d.pathOf(d.truth), d.p_b_g, next, 0.05,
-      std::filesystem::exists(scenes) ? readScenesCsv(scenes) : std::vector<SceneSpan>{});
+std::unique_ptr<FixAudit> fixAuditOf(const DatasetFolder& data, RunSink* next) {
+  if (!data.hasTruthTrajectory()) return nullptr;
+  return std::make_unique<FixAudit>(data.path(data.description.truth), data.description.p_b_g, next,
+                                    0.05, data.scenes);
 }
 
 }  // namespace giocal

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "common/io/dataset_folder.h"
 #include "common/io/scenes_csv.h"
 #include "common/io/sensor_logs.h"
 #include "common/online/run_sink.h"
@@ -52,6 +53,6 @@ class FixAudit : public RunSink {
 
 /// A FixAudit of the dataset folder's truth.csv when it has one (else null), per scene when it
 /// has a scenes.csv, passing on to `next`.
-std::unique_ptr<FixAudit> fixAuditOf(const std::string& folder, RunSink* next);
+std::unique_ptr<FixAudit> fixAuditOf(const DatasetFolder& data, RunSink* next);
 
 }  // namespace giocal

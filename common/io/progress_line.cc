@@ -55,14 +55,4 @@ void ProgressLine::clear() {
   shown_ = false;
 }
 
-std::pair<double, double> datasetTimeSpan(const std::string& folder) {
-  try {
-    const DatasetDescription d = readDatasetDescription(folder);
-    if (const auto span = csvTimeSpan(d.pathOf(d.imu))) return *span;
-  } catch (const std::exception&) {
-    // The replay reports a bad dataset with its own message; progress just stays off.
-  }
-  return {0.0, 0.0};
-}
-
 }  // namespace giocal

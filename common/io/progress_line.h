@@ -31,7 +31,4 @@ class ProgressLine {
   double started_, last_drawn_ = -1.0;
 };
 
-/// The time span of a dataset folder's IMU log (for a ProgressLine); {0, 0} when unknown.
-std::pair<double, double> datasetTimeSpan(const std::string& folder);
-
 }  // namespace giocal
