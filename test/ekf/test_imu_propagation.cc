@@ -73,6 +73,11 @@ TEST(ImuPropagation, PerSampleEqualsOneShotPreintegration) {
   const Eigen::MatrixXd got = s.covariance().bottomRightCorner(15, 15);
   for (int i = 0; i < 15; ++i) {
     EXPECT_NEAR(got(i, i) / expected(i, i), 1.0, 0.02) << "component " << i;
+    // The correlations too, each against the expected variances of its pair.
+    for (int j = 0; j < i; ++j) {
+      const double scale = std::sqrt(expected(i, i) * expected(j, j));
+      EXPECT_NEAR(got(i, j) / scale, expected(i, j) / scale, 0.02) << i << ", " << j;
+    }
   }
   // The scale factor's variance and its (zero) correlation are untouched.
   EXPECT_DOUBLE_EQ(s.covariance()(0, 0), 1e-4);

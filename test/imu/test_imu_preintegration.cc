@@ -269,6 +269,7 @@ TEST(ImuPreintegration, CovarianceMatchesMonteCarlo) {
   std::normal_distribution<double> n01;
   auto gauss = [&](double sd) -> Vec3 { return Vec3(n01(rng), n01(rng), n01(rng)) * sd; };
   Eigen::Matrix<double, 9, 9> S = Eigen::Matrix<double, 9, 9>::Zero();
+  std::vector<Eigen::Matrix<double, 9, 1>> errors;
   for (int r = 0; r < runs; ++r) {
     ImuPreintegration p(noise, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero());
     Vec3 bg = Vec3::Zero(), ba = Vec3::Zero();
@@ -282,6 +283,7 @@ TEST(ImuPreintegration, CovarianceMatchesMonteCarlo) {
     e << p.deltaP() - nominal.deltaP(), logSO3(nominal.deltaR().transpose() * p.deltaR()),
         p.deltaV() - nominal.deltaV();
     S += e * e.transpose() / runs;
+    errors.push_back(e);
   }
   const Eigen::Matrix<double, 9, 9> P = nominal.covariance().topLeftCorner<9, 9>();
   EXPECT_LT((P - P.transpose()).norm(), 1e-15);
@@ -290,7 +292,19 @@ TEST(ImuPreintegration, CovarianceMatchesMonteCarlo) {
   for (int i = 0; i < 9; ++i) {
     // 2000 samples give a variance to about 3 % (1 sigma); allow 12 %.
     EXPECT_NEAR(S(i, i) / P(i, i), 1.0, 0.12) << "component " << i;
+    // A correlation to about (1 - rho^2) / sqrt(2000) = 0.022 (1 sigma); allow 0.1.
+    for (int j = 0; j < i; ++j) {
+      EXPECT_NEAR(S(i, j) / std::sqrt(S(i, i) * S(j, j)), P(i, j) / std::sqrt(P(i, i) * P(j, j)),
+                  0.1)
+          << i << ", " << j;
+    }
   }
+  // The whole matrix: the mean NEES of the runs' errors is 9 (chi-square, 9 dof), to
+  // sqrt(2 * 9 / 2000) = 0.095 (1 sigma); allow 0.5.
+  const Eigen::LDLT<Eigen::Matrix<double, 9, 9>> ldlt(P);
+  double nees = 0.0;
+  for (const auto& e : errors) nees += e.dot(ldlt.solve(e)) / runs;
+  EXPECT_NEAR(nees, 9.0, 0.5);
 }
 
 TEST(ImuPreintegration, GapsAreBridgedWithACovarianceThatCoversTheInterpolationError) {

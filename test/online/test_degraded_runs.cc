@@ -86,7 +86,34 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutWheelSlip) {
   const CalibrationInputs in = simulated(cfg, 35);
   const CalibrationRun run = replayInputs(in, {"fgo", {}, {}}, nullptr);
   EXPECT_GT(run.counter(Counter::kOdometerRejected), 0);
-  EXPECT_LT(calibrationError(run.final(), in.truth->calib).nees7, 100.0);
+  // Consistency under slip is tested over ten seeds
+  // (BothEstimatorsStayConsistentUnderWheelSlip...): one seed's NEES bound passes or fails by luck.
+}
+
+// Consistency under wheel slip (0.5 s at 1.3x speed twice a minute), both estimators, over ten
+// seeds never used while developing: a consistent estimator's NEES7 is under its 95 % bound
+// (14.07) with probability 0.95, so at least 8 of 10 runs (probability 0.99) must be. The field
+// preset, three of its laps: on the paper preset the EKF's yaw sigma is too small even without
+// slip (err/sigma 1.98, docs/results.md), which this test is not about.
+TEST(DegradedRuns, BothEstimatorsStayConsistentUnderWheelSlipOverTenSeeds) {
+  sim::SimConfig cfg =
+      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
+  cfg.segments.resize(2 + 4 * 3);  // the start and 3 of the 10 laps
+  cfg.odometer.slip_rate_per_min = 2.0;
+  std::vector<CalibrationInputs> drives;
+  for (std::uint64_t seed = 3101; seed <= 3110; ++seed) drives.push_back(simulated(cfg, seed));
+  for (const char* est : {"ekf", "fgo"}) {
+    SCOPED_TRACE(est);
+    int under = 0;
+    std::string nees;
+    for (const CalibrationInputs& in : drives) {
+      const CalibrationRun run = replayInputs(in, {est, {}, {}}, nullptr);
+      const double n = calibrationError(run.final(), in.truth->calib).nees7;
+      under += n < 14.07;
+      nees += " " + std::to_string(n);
+    }
+    EXPECT_GE(under, 8) << "NEES7 of seeds 3101-3110:" << nees;
+  }
 }
 
 TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
@@ -107,8 +134,6 @@ TEST(DegradedRuns, TheFactorGraphLeavesOutSlippingOdometerSamples) {
   const CalibrationRun run = replayInputs(in, {"fgo", {}, {}}, nullptr);
   EXPECT_EQ(before.counter(Counter::kOdometerSlips), 0);
   EXPECT_GT(run.counter(Counter::kOdometerSlips), 30);
-  // 14.1: the 95 % bound of a consistent run's NEES7.
-  EXPECT_LT(calibrationError(run.final(), in.truth->calib).nees7, 14.1);
 }
 
 TEST(DegradedRuns, ACalibrationThatJumpsIsNamed) {
