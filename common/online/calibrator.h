@@ -2,6 +2,12 @@
 // GNSS epochs, ephemerides, in any interleaving) and reads at any time (calibration with its
 // covariance, navigation state, health). It puts the sensors back in time order, initializes,
 // and hands events to one EstimatorCore (EKF or factor graph); memory stays bounded.
+//
+// Threading: a Calibrator is not thread-safe. Call all its functions from one thread; the
+// estimation runs inside whichever add*() releases the data it waits for (usually addImu), and a
+// RunSink's callbacks run on that thread too. A robot whose sensor callbacks run on several
+// threads, or that must keep its IMU callback light, puts a CalibratorQueue in front of it
+// (common/online/calibrator_queue.h: enqueue only, estimation on a thread of the robot's choice).
 #pragma once
 
 #include <array>
