@@ -12,8 +12,8 @@
 #include "common/io/progress_line.h"
 #include "common/math/rotation.h"
 #include "evaluation/calibration_source.h"
-#include "options/giocal_config.h"
 #include "evaluation/dead_reckoning.h"
+#include "options/giocal_config.h"
 
 namespace giocal {
 namespace {
@@ -28,21 +28,6 @@ nlohmann::ordered_json calibrationJson(const CalibrationPrior& c) {
           {"p_b_m", {c.mean.p_b_m.x(), c.mean.p_b_m.y(), c.mean.p_b_m.z()}},
           {"q_b_m", {q.w(), q.x(), q.y(), q.z()}},
           {"rpy_b_m_deg", {rpy.x(), rpy.y(), rpy.z()}}};
-}
-
-/// Position solutions as reference rows (no velocity or attitude).
-std::vector<TruthSample> positionRows(const std::vector<PositionFix>& fixes) {
-  std::vector<TruthSample> rows;
-  for (const PositionFix& f : fixes) {
-    const Geodetic g = geodeticFromEcef(f.p_e);
-    TruthSample s;
-    s.t = f.t;
-    s.lat_deg = g.lat * kRadToDeg;
-    s.lon_deg = g.lon * kRadToDeg;
-    s.h = g.h;
-    rows.push_back(s);
-  }
-  return rows;
 }
 
 }  // namespace
@@ -63,15 +48,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
   checkStop(job.stop);
   const CalibrationSource source = readCalibrationSource(job.calibration, in);
-  dr.calibration = source.calibration;
-  // An estimated odometer delay is part of the calibration: its stamps are put back on time.
-  for (OdomSample& s : in.odom) s.t -= source.odometer_delay_s;
-  // So is an estimated gyro tilt: the IMU is integrated with it (held, as the calibration is).
-  if (source.gyro_tilt.allFinite()) {
-    dr.options.estimate_gyro_tilt = true;
-    dr.options.gyro_tilt_start = source.gyro_tilt;
-    dr.options.gyro_tilt_sigma_deg = source.gyro_tilt_sd * kRadToDeg;
-  }
+  applyCalibrationSource(source, dr, in.odom);
   std::string reference_path = job.reference;
   if (reference_path.empty()) {
     if (in.description.truth.empty()) {

@@ -14,6 +14,7 @@
 #include "apps/interrupt_watch.h"
 #include "apps/observability_command.h"
 #include "apps/report_command.h"
+#include "apps/validate_command.h"
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
@@ -56,14 +57,18 @@ const char* kUsage =
     "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
     "  giocal observability --data <dir> [--calibration truth|guess] [--pos <file.pos>]\n"
     "                   [--window <s>] [--out <dir>]\n"
+    "  giocal validate  --data <dir> --run <calibrate dir> [--outage <s>] [--windows <n>]\n"
+    "                   [--gnss tc|lc --pos <file.pos>] [--config <yaml>] --out <dir> "
+    "[--overwrite]\n"
     "  giocal <command> --help     the command's options, their defaults and an example\n"
     "  giocal --version\n"
     "  (calibrate, compare, deadreckon and import show their progress on standard error when it is "
     "a\n"
     "  terminal; --quiet turns that off)\n";
 
-const char* const kCommands[] = {"check",      "simulate", "rtk",    "calibrate", "compare",
-                                 "deadreckon", "import",   "export", "report"};
+const char* const kCommands[] = {"check",   "simulate",      "rtk",     "calibrate",
+                                 "compare", "deadreckon",    "import",  "export",
+                                 "report",  "observability", "validate"};
 
 /// The options every command that writes a run's outputs takes: config, out, overwrite, quiet.
 void addRunOutputOptions(po::options_description& opts, bool out_required) {
@@ -186,6 +191,35 @@ int runCompareCommand(int argc, char** argv) {
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   return giocal::runCompare(job, std::cout) ? 3 : 0;  // 3: a run does not believe its answer
+}
+
+int runValidateCommand(int argc, char** argv) {
+  po::options_description opts("giocal validate");
+  opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
+      "run", po::value<std::string>()->required(), "the calibrate output folder to check")(
+      "outage", po::value<double>()->default_value(60.0), "each window's GNSS outage [s]")(
+      "windows", po::value<int>()->default_value(5), "windows spread over the drive");
+  addGnssOptions(opts);
+  addRunOutputOptions(opts, true);
+  const po::variables_map vm = giocal::parseCommand(
+      argc, argv, opts,
+      "giocal validate: checks a calibration on the drive without a truth: GNSS outages "
+      "dead-reckoned with it and with the initial guess, against the GNSS solution",
+      "giocal validate --data /tmp/field --run /tmp/field-ekf --out /tmp/field-validate");
+  giocal::ValidateJob job;
+  job.data = vm["data"].as<std::string>();
+  job.run = vm["run"].as<std::string>();
+  job.outage_s = vm["outage"].as<double>();
+  job.windows = vm["windows"].as<int>();
+  job.positions = lcPositions(vm);
+  job.config = vm["config"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") != 0;
+  job.quiet = vm.count("quiet") != 0;
+  const giocal::InterruptWatch interrupts;
+  job.stop = interrupts.stop();
+  giocal::runValidate(job, std::cout);
+  return 0;
 }
 
 int runReportCommand(int argc, char** argv) {
@@ -325,6 +359,7 @@ int main(int argc, char** argv) {
     if (command == "export") return runExportCommand(argc - 1, argv + 1);
     if (command == "report") return runReportCommand(argc - 1, argv + 1);
     if (command == "observability") return runObservabilityCommand(argc - 1, argv + 1);
+    if (command == "validate") return runValidateCommand(argc - 1, argv + 1);
     const std::string near =
         giocal::likelyMeant(command, {std::begin(kCommands), std::end(kCommands)});
     std::cerr << "giocal: unknown command '" << command << "'"

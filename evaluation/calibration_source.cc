@@ -14,6 +14,7 @@
 #include "common/io/output_set.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
+#include "evaluation/dead_reckoning.h"
 
 namespace giocal {
 namespace {
@@ -166,6 +167,17 @@ CalibrationSource readCalibrationSource(const std::string& source, const Calibra
   throw std::runtime_error("--calibration " + source +
                            ": expected <run>/summary.json, <calibration.csv>@<seconds>, truth, "
                            "guess, truth:<dataset> or guess:<dataset>");
+}
+
+void applyCalibrationSource(const CalibrationSource& source, DeadReckoningJob& job,
+                            std::vector<OdomSample>& odom) {
+  job.calibration = source.calibration;
+  for (OdomSample& s : odom) s.t -= source.odometer_delay_s;
+  if (source.gyro_tilt.allFinite()) {
+    job.options.estimate_gyro_tilt = true;
+    job.options.gyro_tilt_start = source.gyro_tilt;
+    job.options.gyro_tilt_sigma_deg = source.gyro_tilt_sd * kRadToDeg;
+  }
 }
 
 }  // namespace giocal

@@ -27,4 +27,10 @@ struct CalibrationSource {
 /// Throws DataError or std::runtime_error saying what is wrong with it.
 CalibrationSource readCalibrationSource(const std::string& source, const CalibrationInputs& in);
 
+struct DeadReckoningJob;
+/// Dead reckoning with `source`: its calibration held, its odometer delay taken out of `odom`'s
+/// stamps (they are put back on time), its gyro tilt integrated with the IMU.
+void applyCalibrationSource(const CalibrationSource& source, DeadReckoningJob& job,
+                            std::vector<OdomSample>& odom);
+
 }  // namespace giocal

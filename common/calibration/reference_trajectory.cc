@@ -52,4 +52,18 @@ Eigen::Vector3d antennaOfRow(const TruthSample& s, const Eigen::Vector3d& p_b_g)
   return ecefFromGeodetic({lat, lon, s.h}) + rotationEcefFromEnu(lat, lon) * (s.q_n_b * p_b_g);
 }
 
+std::vector<TruthSample> positionRows(const std::vector<PositionFix>& fixes) {
+  std::vector<TruthSample> rows;
+  for (const PositionFix& f : fixes) {
+    const Geodetic g = geodeticFromEcef(f.p_e);
+    TruthSample s;
+    s.t = f.t;
+    s.lat_deg = g.lat * kRadToDeg;
+    s.lon_deg = g.lon * kRadToDeg;
+    s.h = g.h;
+    rows.push_back(s);
+  }
+  return rows;
+}
+
 }  // namespace giocal

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/geodesy/wgs84.h"
+#include "common/gnss/pos_reader.h"
 #include "common/imu/nav_state.h"
 #include "common/io/sensor_logs.h"
 
@@ -25,6 +26,9 @@ class ReferenceTrajectory {
  private:
   std::vector<TruthSample> samples_;
 };
+
+/// Position solutions as reference rows (no velocity or attitude).
+std::vector<TruthSample> positionRows(const std::vector<PositionFix>& fixes);
 
 /// The sample at t between rows a and b (a.t <= t <= b.t): linear in position and velocity, slerp
 /// in attitude.

@@ -1,0 +1,136 @@
+#include "apps/validate_command.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+
+#include "common/calibration/calibration_inputs.h"
+#include "common/gnss/pos_reader.h"
+#include "common/gnss/rtk_job.h"
+#include "common/io/output_set.h"
+#include "common/io/progress_line.h"
+#include "evaluation/validation.h"
+#include "options/giocal_config.h"
+
+namespace giocal {
+
+namespace {
+
+const std::vector<std::string> kFiles{"summary.json", "gnss_reference.pos"};
+
+/// The fixed RTK solutions of the dataset's rover and base, written to `pos`.
+std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfig& config,
+                                  const std::string& pos, const StopRequest* stop) {
+  const DatasetDescription& d = in.description;
+  if (d.base_obs.empty())
+    throw std::runtime_error(d.pathOf("dataset.yaml") +
+                             ": no base observations; validate a rover-only dataset with --gnss lc "
+                             "--pos <file.pos>");
+  RtkJob job;
+  job.rover = d.pathOf(d.rover_obs);
+  job.base = d.pathOf(d.base_obs);
+  for (const std::string& n : d.nav) job.nav.push_back(d.pathOf(n));
+  job.base_pos = d.base_position_ecef;
+  job.options = config.rtk;
+  job.out = pos;
+  job.stop = stop;
+  std::vector<RtkSolution> solutions;
+  runRtk(job, &solutions);
+  std::vector<PositionFix> fixes;
+  for (const RtkSolution& s : solutions) {
+    if (s.quality != 1) continue;
+    PositionFix f;
+    f.t = s.t;
+    f.p_e = s.p_e;
+    f.quality = 1;
+    fixes.push_back(f);
+  }
+  return fixes;
+}
+
+}  // namespace
+
+void runValidate(const ValidateJob& job, std::ostream& log) {
+  if (!job.overwrite) {
+    for (const std::string& f : kFiles) {
+      if (std::filesystem::exists(job.out + "/" + f))
+        throw std::runtime_error(job.out + "/" + f + " exists; give --overwrite to replace it");
+    }
+  }
+  if (job.outage_s < 5.0 || job.windows < 1)
+    throw std::runtime_error("--outage must be at least 5 s and --windows at least 1");
+  const GiocalConfig config = readGiocalConfig(job.config);
+  const CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
+  OutputSet outputs(job.out);
+  std::vector<PositionFix> reference_fixes;
+  std::string reference;
+  if (job.positions.empty()) {
+    reference_fixes = rtkFixes(in, config, outputs.stagedPath("gnss_reference.pos"), job.stop);
+    reference = "RTK fixes of the dataset (gnss_reference.pos)";
+  } else {
+    reference_fixes = in.positions;
+    reference = job.positions;
+  }
+  if (reference_fixes.size() < 2)
+    throw std::runtime_error("validate needs a GNSS solution over the drive: " + reference +
+                             " has " + std::to_string(reference_fixes.size()) + " rows");
+  const ReferenceTrajectory trajectory(positionRows(reference_fixes));
+  ValidationJob v;
+  v.run = job.run;
+  v.outage_s = job.outage_s;
+  v.windows = job.windows;
+  v.options = config.calibration;
+  v.options.loosely_coupled = !job.positions.empty();
+  ProgressLine progress("validate", 0.0, 1.0, job.quiet, "of the windows");
+  v.progress = [&](double share) {
+    progress.update(share);
+    checkStop(job.stop);
+  };
+  const Validation r = validateCalibration(in, trajectory, v);
+  progress.clear();
+
+  nlohmann::ordered_json windows = nlohmann::ordered_json::array();
+  for (const ValidationWindow& w : r.windows) {
+    windows.push_back({{"start_s", w.start_s},
+                       {"duration_s", w.duration_s},
+                       {"distance_m", w.distance_m},
+                       {"calibrated_m", w.calibrated_m},
+                       {"guess_m", w.guess_m}});
+  }
+  nlohmann::ordered_json j;
+  if (job.positions.empty())
+    j["files"] = {{"gnss_reference.pos", outputs.close("gnss_reference.pos")}};
+  j["run"] = job.run;
+  j["reference"] = reference;
+  j["outage_s"] = job.outage_s;
+  j["metric"] = "horizontal MAX error inside each window [m]";
+  j["windows"] = windows;
+  j["calibrated"] = r.calibrated_m;
+  j["guess"] = r.guess_m;
+  j["ratio"] = r.ratio;
+  j["better_windows"] = r.better_windows;
+  j["verdict"] = r.verdict;
+  j["confidence"] = r.confidence;
+  outputs.open("summary.json", true) << std::setprecision(12) << j.dump(2) << "\n";
+  outputs.commit();
+
+  log << std::fixed << std::setprecision(1) << "giocal validate: " << job.run << " on " << job.data
+      << " against " << reference << "\n";
+  for (const ValidationWindow& w : r.windows) {
+    log << "  window +" << w.start_s << " s, " << w.duration_s << " s, " << w.distance_m
+        << " m driven: horizontal MAX " << std::setprecision(2) << w.calibrated_m
+        << " m calibrated, " << w.guess_m << " m guess" << std::setprecision(1) << "\n";
+  }
+  log << "  outputs: " << job.out << "/{summary.json"
+      << (job.positions.empty() ? ", gnss_reference.pos" : "") << "}\n";
+  log << std::setprecision(2) << "  verdict: " << r.verdict << " (mean " << r.calibrated_m
+      << " m calibrated against " << r.guess_m << " m guess, ratio " << r.ratio << "; better in "
+      << r.better_windows << " of " << r.windows.size() << " windows";
+  if (r.verdict != "no better") log << ", confidence " << r.confidence;
+  log << ")\n";
+  log.unsetf(std::ios::fixed);
+}
+
+}  // namespace giocal
