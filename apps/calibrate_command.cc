@@ -8,9 +8,11 @@
 #include "apps/live_run_writer.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/fix_audit.h"
+#include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "options/giocal_config.h"
 #include "replay/estimator_factory.h"
+#include "replay/measured_delay.h"
 #include "replay/replay.h"
 
 namespace giocal {
@@ -83,7 +85,13 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
     }
   }
   replay.stop = job.stop;
-  const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
+  DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
+  // An odometer measured late beyond doubt is put back on time before calibrating.
+  const double applied = applyMeasuredOdometerDelay(data, replay.options);
+  if (applied != 0.0) {
+    log << "  the odometer's stamps are " << fixedText(applied * 1e3, 0)
+        << " ms late against the IMU's (measured on the logs): taken out for this run\n";
+  }
   OutputSet outputs(job.out);
   const auto span = data.imu_span;
   ProgressLine progress("calibrate " + job.estimator, span.first, span.second, job.quiet);
@@ -94,6 +102,10 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
       replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
   if (audit) audit->addTo(run);
   progress.clear();
+  if (applied != 0.0) {
+    run.odometer_delay_applied_s = applied;
+    run.warn(appliedDelayWarning(applied, data));
+  }
   const std::optional<TruthCalibration>& truth = data.truth;
   writer.finish(run, truth ? &truth->calib : nullptr);
   outputs.commit();

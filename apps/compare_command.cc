@@ -11,6 +11,7 @@
 #include "common/calibration/fix_audit.h"
 #include "common/math/rotation.h"
 #include "options/giocal_config.h"
+#include "replay/measured_delay.h"
 #include "replay/replay.h"
 
 namespace giocal {
@@ -41,7 +42,9 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
   replay.positions = job.positions;
   replay.options.loosely_coupled = !job.positions.empty();
   replay.stop = job.stop;
-  const DatasetFolder data = openDatasetFolder(job.data);  // once for both runs
+  DatasetFolder data = openDatasetFolder(job.data);  // once for both runs
+  // An odometer measured late beyond doubt is put back on time before calibrating (as calibrate).
+  const double applied = applyMeasuredOdometerDelay(data, replay.options);
   OutputSet outputs(out);
   const std::optional<TruthCalibration>& truth_file = data.truth;
   const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
@@ -57,6 +60,10 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
     runs[a] = replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
     if (audit) audit->addTo(runs[a]);
     progress.clear();
+    if (applied != 0.0) {
+      runs[a].odometer_delay_applied_s = applied;
+      runs[a].warn(appliedDelayWarning(applied, data));
+    }
     writer.finish(runs[a], truth);
   }
 

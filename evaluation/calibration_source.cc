@@ -19,6 +19,14 @@
 namespace giocal {
 namespace {
 
+/// The odometer delay the run took out before calibrating (summary.json's
+/// odometer_delay.applied_s): the calibration holds with the stamps corrected by it.
+double appliedDelay(const nlohmann::json& summary) {
+  if (!summary.contains("odometer_delay") || !summary["odometer_delay"].is_object()) return 0.0;
+  const auto& d = summary["odometer_delay"];
+  return d.contains("applied_s") && d["applied_s"].is_number() ? d["applied_s"].get<double>() : 0.0;
+}
+
 CalibrationSource fromSummary(const std::string& path) {
   verifyOutputSet(path);
   std::ifstream in(path);
@@ -47,6 +55,7 @@ CalibrationSource fromSummary(const std::string& path) {
     s.calibration.covariance = cov;
     if (f.contains("t_d_odo")) s.odometer_delay_s = f["t_d_odo"].get<double>();
     if (!std::isfinite(s.odometer_delay_s)) throw std::runtime_error("t_d_odo not finite");
+    s.odometer_delay_s += appliedDelay(j);
     if (f.contains("gyro_tilt_deg")) {
       const auto d = f["gyro_tilt_deg"].get<std::vector<double>>();
       if (d.size() != 2) throw std::runtime_error("gyro_tilt_deg: sizes");
@@ -153,15 +162,18 @@ CalibrationSource readCalibrationSource(const std::string& source, const Calibra
     // Seconds count from the start of the run that wrote the file (its summary.json beside it),
     // else from the first rover epoch of the data being dead-reckoned.
     const std::string csv = source.substr(0, at);
-    double t0 = in.rover.epochs.front().t;
+    double t0 = in.rover.epochs.front().t, applied = 0.0;
     std::ifstream beside((std::filesystem::path(csv).parent_path() / "summary.json").string());
     if (beside) {
       const nlohmann::json j = nlohmann::json::parse(beside, nullptr, false);
       if (!j.is_discarded() && j.contains("t_first_rover_epoch") &&
           j["t_first_rover_epoch"].is_number())
         t0 = j["t_first_rover_epoch"].get<double>();
+      if (!j.is_discarded()) applied = appliedDelay(j);
     }
-    return fromCsvAt(csv, seconds, t0);
+    CalibrationSource s = fromCsvAt(csv, seconds, t0);
+    s.odometer_delay_s += applied;
+    return s;
   }
   if (source.size() >= 5 && source.substr(source.size() - 5) == ".json") return fromSummary(source);
   throw std::runtime_error("--calibration " + source +

@@ -39,6 +39,10 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.estimate_p_b_g = flag("estimate_p_b_g", o.estimate_p_b_g);
   o.p_b_g_sigma = y.numberOr(s + "p_b_g_sigma", o.p_b_g_sigma, 1e-6, 10.0);
   o.estimate_odometer_delay = flag("estimate_odometer_delay", o.estimate_odometer_delay);
+  o.apply_odometer_delay_sigma =
+      y.numberOr(s + "apply_odometer_delay_sigma", o.apply_odometer_delay_sigma, 0.0, 1.0);
+  o.apply_odometer_delay_min =
+      y.numberOr(s + "apply_odometer_delay_min", o.apply_odometer_delay_min, 0.0, 10.0);
   o.odometer_delay_sigma =
       y.numberOr(s + "odometer_delay_sigma", o.odometer_delay_sigma, 1e-4, 1.0);
   o.estimate_gyro_tilt = flag("estimate_gyro_tilt", o.estimate_gyro_tilt);

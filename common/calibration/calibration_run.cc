@@ -208,6 +208,8 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
                            {"blocks", d.samples},
                            {"yaw_rate_rms", d.yaw_rate_rms}};
   }
+  if (run.odometer_delay_applied_s != 0.0)
+    j["odometer_delay"]["applied_s"] = run.odometer_delay_applied_s;
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;

@@ -63,6 +63,9 @@ struct CalibrationRun {
   // The odometer's delay against the IMU seen in the yaw rate both measure, after the dataset's
   // time_offsets (OdometerDelayEstimator); samples 0 when not computed.
   OdometerDelay odometer_delay;
+  // The delay a first pass measured and this run took out of the odometer's stamps (calibrate's
+  // calibration.apply_odometer_delay_*) [s]; 0 when none.
+  double odometer_delay_applied_s = 0.0;
   std::vector<std::string> warnings;           // bad data met on the way, divergence (capped)
   std::map<std::string, std::string> options;  // the options in effect, defaults included
   // "ok", or "partial: <why>" when the data after a divergence or an IMU gap allowed no restart:

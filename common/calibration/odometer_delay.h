@@ -21,6 +21,13 @@ struct OdometerDelay {
   double yaw_rate_rms = 0.0;  // of the gyro about up [rad/s]: how much the drive turned
 };
 
+/// Whether a run should be made again with `measured` taken out of the odometer's stamps: valid,
+/// its sigma below `max_sigma_s` and its size above `min_delay_s` (both > 0).
+inline bool worthApplying(const OdometerDelay& measured, double max_sigma_s, double min_delay_s) {
+  return max_sigma_s > 0.0 && min_delay_s > 0.0 && measured.valid &&
+         measured.sigma_s < max_sigma_s && std::abs(measured.delay_s) > min_delay_s;
+}
+
 class OdometerDelayEstimator {
  public:
   /// `up_b`: the vehicle's up axis in the IMU frame (R_b_m e_z); delays within +-max_delay_s are
