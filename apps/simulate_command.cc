@@ -12,7 +12,9 @@
 #include "common/gnss/pos_reader.h"
 #include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
+#if GIOCAL_FACTOR_GRAPH
 #include "sim/fitted_path.h"
+#endif
 #include "sim/simulator.h"
 
 namespace giocal {
@@ -54,6 +56,12 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
 
 void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const std::string& out,
                       std::uint64_t seed, std::ostream& log, const StopRequest* stop) {
+#if !GIOCAL_FACTOR_GRAPH
+  (void)config, (void)gnss, (void)out, (void)seed, (void)log, (void)stop;
+  throw std::runtime_error(
+      "simulate --trajectory: this giocal was built without the factor graph "
+      "(-DGIOCAL_FACTOR_GRAPH=OFF), whose solver fits the path");
+#else
   const sim::SimConfig cfg = sim::readSimConfig(config);
   refuseDatasetFolder(out);
   if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
@@ -135,6 +143,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
         << " m (median): the real carrier phases will not fit the synthesized motion to their "
            "noise (a solution with jumps, or motion a ground vehicle cannot make)\n";
   }
+#endif
 }
 
 }  // namespace giocal

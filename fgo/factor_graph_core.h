@@ -22,7 +22,7 @@
 #include "common/models/dd_gnss_model.h"
 #include "common/motion/motion_detector.h"
 #include "common/online/estimator_core.h"
-#include "fgo/fgo_options.h"
+#include "options/fgo_options.h"
 #include "fgo/sliding_window.h"
 
 namespace giocal {

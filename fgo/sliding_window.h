@@ -12,6 +12,7 @@
 
 #include "common/models/measurement_model.h"
 #include "common/models/state_key.h"
+#include "options/fgo_options.h"
 
 namespace giocal {
 
@@ -30,10 +31,6 @@ struct Factor {
   std::vector<std::pair<int, int>> sqrt_info_blocks = {};
 };
 
-/// How the window is solved. Both minimize the same robust cost; Gauss-Newton forms the sparse
-/// Hessian once per iteration and keeps its last factorization for the covariances (faster, the
-/// default); Ceres (trust region started as Gauss-Newton) is the reference it is tested against.
-enum class WindowSolver { kGaussNewton, kCeres };
 
 class SlidingWindow {
  public:

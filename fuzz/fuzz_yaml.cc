@@ -3,7 +3,7 @@
 #include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
 #include "common/io/dataset_description.h"
-#include "fgo/fgo_options.h"
+#include "options/fgo_options.h"
 #include "fuzz/fuzz_input.h"
 #include "sim/sim_config.h"
 

@@ -8,7 +8,7 @@
 
 #include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
-#include "fgo/fgo_options.h"
+#include "options/fgo_options.h"
 
 namespace giocal {
 

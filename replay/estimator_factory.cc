@@ -3,11 +3,19 @@
 #include <stdexcept>
 
 #include "ekf/ekf_core.h"
+#if GIOCAL_FACTOR_GRAPH
 #include "fgo/factor_graph_core.h"
+#endif
 
 namespace giocal {
 
-std::vector<std::string> estimatorNames() { return {"ekf", "fgo"}; }
+std::vector<std::string> estimatorNames() {
+#if GIOCAL_FACTOR_GRAPH
+  return {"ekf", "fgo"};
+#else
+  return {"ekf"};
+#endif
+}
 
 CoreFactory coreFactory(const std::string& name, const CalibrationOptions& options,
                         const FgoOptions& fgo_options) {
@@ -17,6 +25,7 @@ CoreFactory coreFactory(const std::string& name, const CalibrationOptions& optio
       return std::make_unique<EkfCore>(options, sensors, orbits, init);
     };
   }
+#if GIOCAL_FACTOR_GRAPH
   if (name == "fgo") {
     return [options, fgo_options](const CalibrationInputs& sensors, const BroadcastOrbits& orbits,
                                   const InitialState& init) -> std::unique_ptr<EstimatorCore> {
@@ -24,6 +33,15 @@ CoreFactory coreFactory(const std::string& name, const CalibrationOptions& optio
     };
   }
   throw std::invalid_argument("--estimator must be ekf or fgo, not '" + name + "'");
+#else
+  (void)fgo_options;
+  if (name == "fgo") {
+    throw std::invalid_argument(
+        "--estimator fgo: this giocal was built without the factor graph "
+        "(-DGIOCAL_FACTOR_GRAPH=OFF); the EKF is --estimator ekf");
+  }
+  throw std::invalid_argument("--estimator must be ekf, not '" + name + "'");
+#endif
 }
 
 std::unique_ptr<Calibrator> makeCalibrator(const std::string& name,

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "common/online/calibrator.h"
-#include "fgo/fgo_options.h"
+#include "options/fgo_options.h"
 
 namespace giocal {
 

@@ -11,7 +11,7 @@
 #include "common/io/dataset_folder.h"
 #include "common/io/stop_request.h"
 #include "common/online/calibrator.h"
-#include "fgo/fgo_options.h"
+#include "options/fgo_options.h"
 
 namespace giocal {
 

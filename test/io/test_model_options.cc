@@ -4,7 +4,7 @@
 #include "common/gnss/rtk_config.h"
 #include "common/io/data_error.h"
 #include "common/io/model_options.h"
-#include "fgo/fgo_options.h"
+#include "options/fgo_options.h"
 #include "temp_dir.h"
 
 namespace giocal {

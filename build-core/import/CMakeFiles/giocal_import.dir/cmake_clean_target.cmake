@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libgiocal_import.a"
+)

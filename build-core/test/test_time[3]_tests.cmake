@@ -1,0 +1,1 @@
+set(  test_time_TESTS)
