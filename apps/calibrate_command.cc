@@ -6,8 +6,10 @@
 #include <stdexcept>
 
 #include "apps/live_run_writer.h"
+#include "apps/prior_file.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/fix_audit.h"
+#include "common/calibration/warm_start.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
 #include "options/giocal_config.h"
@@ -86,6 +88,22 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   }
   replay.stop = job.stop;
   DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
+  // Warm start: the earlier drive's calibration, its covariance grown for the days between.
+  std::string warm;
+  if (!job.prior.empty()) {
+    const PriorFile p = readPriorFile(job.prior);
+    const std::string differs = robotMismatch(p.robot, robotFingerprint(data.description));
+    if (!differs.empty()) {
+      throw std::runtime_error("--prior " + job.prior + " is another robot's: dataset.yaml's " +
+                               differs);
+    }
+    const double dt = data.imu_span.first - p.t_final;
+    data.description.initial_calibration =
+        carriedPrior(p.calibration, dt, replay.options.warm_start);
+    warm = "started from " + job.prior + " (" + fixedText(std::max(0.0, dt) / 86400.0, 2) +
+           " days earlier; covariance grown by calibration.warm_start's drift per sqrt(day))";
+    log << "  " << warm << "\n";
+  }
   // An odometer measured late beyond doubt is put back on time before calibrating.
   const double applied = applyMeasuredOdometerDelay(data, replay.options);
   if (applied != 0.0) {
@@ -106,6 +124,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
     run.odometer_delay_applied_s = applied;
     run.warn(appliedDelayWarning(applied, data));
   }
+  if (!warm.empty()) run.warn(warm);
   const std::optional<TruthCalibration>& truth = data.truth;
   writer.finish(run, truth ? &truth->calib : nullptr);
   outputs.commit();

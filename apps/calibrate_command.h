@@ -12,8 +12,9 @@ namespace giocal {
 struct CalibrateJob {
   std::string data, estimator = "ekf", config, out;
   bool overwrite = false;
-  bool quiet = false;                 // no progress line
-  std::string positions;              // --gnss lc --pos <file.pos>: the LC scheme
+  bool quiet = false;     // no progress line
+  std::string positions;  // --gnss lc --pos <file.pos>: the LC scheme
+  std::string prior;      // --prior <summary.json>: start from an earlier drive's calibration
   const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };
 

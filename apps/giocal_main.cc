@@ -80,6 +80,15 @@ void addRunOutputOptions(po::options_description& opts, bool out_required) {
                                                                          "no progress line");
 }
 
+/// The options addRunOutputOptions() declared, into a job with config, out, overwrite, quiet.
+template <class Job>
+void readRunOutputOptions(const po::variables_map& vm, Job& job) {
+  job.config = vm["config"].as<std::string>();
+  job.out = vm["out"].as<std::string>();
+  job.overwrite = vm.count("overwrite") != 0;
+  job.quiet = vm.count("quiet") != 0;
+}
+
 int runCheckCommand(int argc, char** argv) {
   po::options_description opts("giocal check");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder");
@@ -148,7 +157,9 @@ std::string lcPositions(const po::variables_map& vm) {
 int runCalibrateCommand(int argc, char** argv) {
   po::options_description opts("giocal calibrate");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
-      "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo");
+      "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
+      "prior", po::value<std::string>()->default_value(""),
+      "an earlier drive's summary.json to start from (same robot)");
   addGnssOptions(opts);
   addRunOutputOptions(opts, true);
   const po::variables_map vm = giocal::parseCommand(
@@ -159,11 +170,9 @@ int runCalibrateCommand(int argc, char** argv) {
   giocal::CalibrateJob job;
   job.data = vm["data"].as<std::string>();
   job.estimator = vm["estimator"].as<std::string>();
+  job.prior = vm["prior"].as<std::string>();
   job.positions = lcPositions(vm);
-  job.config = vm["config"].as<std::string>();
-  job.out = vm["out"].as<std::string>();
-  job.overwrite = vm.count("overwrite") != 0;
-  job.quiet = vm.count("quiet") != 0;
+  readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   const giocal::CalibrationRun run = giocal::runCalibrate(job, std::cout);
@@ -184,10 +193,7 @@ int runCompareCommand(int argc, char** argv) {
   giocal::CompareJob job;
   job.data = vm["data"].as<std::string>();
   job.positions = lcPositions(vm);
-  job.config = vm["config"].as<std::string>();
-  job.out = vm["out"].as<std::string>();
-  job.overwrite = vm.count("overwrite") != 0;
-  job.quiet = vm.count("quiet") != 0;
+  readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   return giocal::runCompare(job, std::cout) ? 3 : 0;  // 3: a run does not believe its answer
@@ -212,10 +218,7 @@ int runValidateCommand(int argc, char** argv) {
   job.outage_s = vm["outage"].as<double>();
   job.windows = vm["windows"].as<int>();
   job.positions = lcPositions(vm);
-  job.config = vm["config"].as<std::string>();
-  job.out = vm["out"].as<std::string>();
-  job.overwrite = vm.count("overwrite") != 0;
-  job.quiet = vm.count("quiet") != 0;
+  readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   giocal::runValidate(job, std::cout);
@@ -294,10 +297,7 @@ int runDeadReckonCommand(int argc, char** argv) {
   job.duration_s = vm["duration"].as<double>();
   job.reference = vm["reference"].as<std::string>();
   job.positions = lcPositions(vm);
-  job.config = vm["config"].as<std::string>();
-  job.out = vm["out"].as<std::string>();
-  job.overwrite = vm.count("overwrite") != 0;
-  job.quiet = vm.count("quiet") != 0;
+  readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   giocal::runDeadReckon(job, std::cout);

@@ -72,6 +72,12 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.init.velocity_sigma = y.numberOr(i + "velocity_sigma", o.init.velocity_sigma, 1e-4, 10.0);
   o.init.attitude_sigma_deg =
       y.numberOr(i + "attitude_sigma_deg", o.init.attitude_sigma_deg, 1e-3, 90.0);
+  const std::string w = s + "warm_start.";
+  WarmStartOptions& ws = o.warm_start;
+  ws.s_v = y.numberOr(w + "s_v", ws.s_v, 0.0, 1.0);
+  ws.s_w = y.numberOr(w + "s_w", ws.s_w, 0.0, 1.0);
+  ws.p_b_m = y.numberOr(w + "p_b_m", ws.p_b_m, 0.0, 10.0);
+  ws.rpy_deg = y.numberOr(w + "rpy_deg", ws.rpy_deg, 0.0, 90.0);
   const std::string n = "online.";
   OnlineOptions& on = o.online;
   on.reorder_lag_s = y.numberOr(n + "reorder_lag_s", on.reorder_lag_s, 0.0, 60.0);

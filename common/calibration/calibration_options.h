@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "common/calibration/warm_start.h"
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
 #include "common/gnss/doppler.h"
@@ -49,6 +50,7 @@ struct OnlineOptions {
 };
 
 struct CalibrationOptions {
+  WarmStartOptions warm_start;    // "warm_start" section: drift per sqrt(day) of a carried prior
   ModelOptions models;            // motion detectors, ZUPT and NHC noise
   DdOptions dd;                   // "rtk" section: mask, frequencies, systems, code/phase noise
   LambdaOptions lambda;           // "rtk" section: ratio test, partial AR

@@ -164,6 +164,7 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
                   {"p_b_m", vec(e.calib.p_b_m)},
                   {"q_b_m", {q.w(), q.x(), q.y(), q.z()}},
                   {"rpy_b_m_deg", vec(rpyDeg(q))}};
+    j["t_final"] = e.t;  // GPS time of the final estimate (a later drive's --prior counts from it)
     const Eigen::Matrix<double, 8, 1> sd = e.sigma();
     j["sd"] = {{"s_v", sd[0]},
                {"s_w", sd[1]},
@@ -210,6 +211,7 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
   }
   if (run.odometer_delay_applied_s != 0.0)
     j["odometer_delay"]["applied_s"] = run.odometer_delay_applied_s;
+  if (!run.robot.empty()) j["robot"] = run.robot;
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;

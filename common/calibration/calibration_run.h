@@ -66,6 +66,9 @@ struct CalibrationRun {
   // The delay a first pass measured and this run took out of the odometer's stamps (calibrate's
   // calibration.apply_odometer_delay_*) [s]; 0 when none.
   double odometer_delay_applied_s = 0.0;
+  // The robot the calibration belongs to (warm_start.h's robotFingerprint of dataset.yaml): a
+  // later drive's --prior is refused when it differs.
+  std::map<std::string, double> robot;
   std::vector<std::string> warnings;           // bad data met on the way, divergence (capped)
   std::map<std::string, std::string> options;  // the options in effect, defaults included
   // "ok", or "partial: <why>" when the data after a divergence or an IMU gap allowed no restart:

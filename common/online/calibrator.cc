@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/calibration/warm_start.h"
 #include "common/calibration/weak_directions.h"
 #include "common/io/text.h"
 #include "common/math/rotation.h"
@@ -45,6 +46,7 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
         "(dataset.yaml has odometer.measures_yaw_rate: false)");
   }
   run_.estimator = std::move(estimator);
+  run_.robot = robotFingerprint(dataset);
   run_.p_b_m_z =
       options.hold_p_b_m_z
           ? "held at the prior: planar motion leaves it unobservable"

@@ -1,2 +1,0 @@
-# Empty compiler generated dependencies file for giocal_evaluation.
-# This may be replaced when dependencies are built.

@@ -1,2 +1,0 @@
-# Empty dependencies file for robot_driver_example.
-# This may be replaced when dependencies are built.

@@ -1,2 +1,0 @@
-# Empty compiler generated dependencies file for giocal_import.
-# This may be replaced when dependencies are built.

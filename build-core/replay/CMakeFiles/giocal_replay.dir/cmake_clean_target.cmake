@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libgiocal_replay.a"
-)

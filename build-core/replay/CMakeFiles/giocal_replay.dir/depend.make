@@ -1,2 +1,0 @@
-# Empty dependencies file for giocal_replay.
-# This may be replaced when dependencies are built.

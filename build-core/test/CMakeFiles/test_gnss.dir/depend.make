@@ -1,2 +1,0 @@
-# Empty dependencies file for test_gnss.
-# This may be replaced when dependencies are built.

@@ -1,5 +1,0 @@
-add_test([=[CoarseMounting.SimulatedDrivesWithTheImuFarOff]=]  /work/main/build-core/test/test_calibration [==[--gtest_filter=CoarseMounting.SimulatedDrivesWithTheImuFarOff]==] --gtest_also_run_disabled_tests)
-set_tests_properties([=[CoarseMounting.SimulatedDrivesWithTheImuFarOff]=]  PROPERTIES WORKING_DIRECTORY /work/main/build-core/test SKIP_REGULAR_EXPRESSION [==[\[  SKIPPED \]]==] LABELS slow)
-add_test([=[OdometerDelay.LateAndEarlyWheelStampsOfSimulatedDrives]=]  /work/main/build-core/test/test_calibration [==[--gtest_filter=OdometerDelay.LateAndEarlyWheelStampsOfSimulatedDrives]==] --gtest_also_run_disabled_tests)
-set_tests_properties([=[OdometerDelay.LateAndEarlyWheelStampsOfSimulatedDrives]=]  PROPERTIES WORKING_DIRECTORY /work/main/build-core/test SKIP_REGULAR_EXPRESSION [==[\[  SKIPPED \]]==] LABELS slow)
-set(  test_calibration_TESTS CoarseMounting.SimulatedDrivesWithTheImuFarOff OdometerDelay.LateAndEarlyWheelStampsOfSimulatedDrives)

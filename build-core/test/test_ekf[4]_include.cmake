@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build-core/test/test_ekf[4]_tests.cmake")
-  include("/work/main/build-core/test/test_ekf[4]_tests.cmake")
-else()
-  add_test(test_ekf_NOT_BUILT test_ekf_NOT_BUILT)
-endif()

@@ -1,1 +1,0 @@
-set(  test_ekf_TESTS)

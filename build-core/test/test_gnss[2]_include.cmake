@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build-core/test/test_gnss[2]_tests.cmake")
-  include("/work/main/build-core/test/test_gnss[2]_tests.cmake")
-else()
-  add_test(test_gnss_NOT_BUILT test_gnss_NOT_BUILT)
-endif()

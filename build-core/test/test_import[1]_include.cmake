@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build-core/test/test_import[1]_tests.cmake")
-  include("/work/main/build-core/test/test_import[1]_tests.cmake")
-else()
-  add_test(test_import_NOT_BUILT test_import_NOT_BUILT)
-endif()

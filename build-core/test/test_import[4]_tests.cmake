@@ -1,1 +1,0 @@
-set(  test_import_TESTS)

@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build-core/test/test_imu[3]_tests.cmake")
-  include("/work/main/build-core/test/test_imu[3]_tests.cmake")
-else()
-  add_test(test_imu_NOT_BUILT test_imu_NOT_BUILT)
-endif()

@@ -1,1 +1,0 @@
-set(  test_sim_TESTS)

@@ -1,1 +1,0 @@
-set(  test_time_TESTS)

@@ -1,5 +1,0 @@
-if(EXISTS "/work/main/build-core/test/test_time[4]_tests.cmake")
-  include("/work/main/build-core/test/test_time[4]_tests.cmake")
-else()
-  add_test(test_time_NOT_BUILT test_time_NOT_BUILT)
-endif()
