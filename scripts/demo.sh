@@ -4,7 +4,8 @@
 #     calibrated by the EKF and compared with the factor graph: every parameter converges;
 #  2. a weakly observed one: the reference paper's drive, where the mounting yaw is barely seen,
 #     what the observability advisor says of it before calibrating, and what the run says after;
-#  3. what the calibration is worth: 100 s dead-reckoned without GNSS, the guess against it;
+#  3. what the calibration is worth: 100 s dead-reckoned without GNSS, the guess against it, and
+#     the same checked without a truth (validate);
 #  4. the report page of the field calibration, whose path it prints last.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -49,6 +50,9 @@ echo "== 3. What the calibration is worth: 100 s without GNSS on the field drive
   --out "$demo/dr_guess"
 "$giocal" deadreckon --data "$demo/field" --calibration "$demo/field_ekf/summary.json" \
   --start 200 --duration 100 --out "$demo/dr_ekf"
+echo
+echo "-- giocal validate: the same question without a truth, on five outages against the RTK fixes"
+"$giocal" validate --data "$demo/field" --run "$demo/field_ekf" --quiet --out "$demo/validate"
 
 echo
 echo "== 4. The report page of the field calibration"
