@@ -26,6 +26,7 @@ set(GIOCAL_SLOW_TESTS
   LooselyCoupled.BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm
 )
 set(GIOCAL_REAL_TESTS
+  Rtk.MixedReceivers5kmFixesEveryEpoch
   BagImport.GnssCommMessagesRoundTripARealReceiversObservations
   BagImport.RealHuskyAndJackalBags
   BagImport.UbloxRawGnssReadsAsTheUbxLogDoes
