@@ -20,9 +20,9 @@ struct ImportJob {
   std::string ubx, bag, out;
   std::string imu_topic, odom_topic, fix_topic;  // empty: found by message type
   std::string stamps = "auto";  // a bag's times: auto, header (stamps) or record (receive times)
-  std::string i2nav_imu, i2nav_pos, i2nav_nav;   // i2Nav text logs
-  int gps_week = -1;                             // of the i2Nav IMU's first row; -1: the .nav's
-  std::string lever_arm;                         // "x,y,z" antenna in the IMU frame [m]
+  std::string i2nav_imu, i2nav_pos, i2nav_nav;  // i2Nav text logs
+  int gps_week = -1;                            // of the i2Nav IMU's first row; -1: the .nav's
+  std::string lever_arm;                        // "x,y,z" antenna in the IMU frame [m]
   bool overwrite = false;
   bool quiet = false;  // no progress line
   const StopRequest* stop = nullptr;

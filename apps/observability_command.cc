@@ -16,8 +16,8 @@
 #include "common/io/sensor_logs.h"
 #include "common/io/text.h"
 #include "common/math/median.h"
-#include "options/giocal_config.h"
 #include "evaluation/observability.h"
+#include "options/giocal_config.h"
 
 namespace giocal {
 namespace {

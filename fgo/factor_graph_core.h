@@ -22,8 +22,8 @@
 #include "common/models/dd_gnss_model.h"
 #include "common/motion/motion_detector.h"
 #include "common/online/estimator_core.h"
-#include "options/fgo_options.h"
 #include "fgo/sliding_window.h"
+#include "options/fgo_options.h"
 
 namespace giocal {
 

@@ -31,7 +31,6 @@ struct Factor {
   std::vector<std::pair<int, int>> sqrt_info_blocks = {};
 };
 
-
 class SlidingWindow {
  public:
   void setSolver(WindowSolver solver) { solver_ = solver; }

@@ -3,8 +3,8 @@
 #include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
 #include "common/io/dataset_description.h"
-#include "options/fgo_options.h"
 #include "fuzz/fuzz_input.h"
+#include "options/fgo_options.h"
 #include "sim/sim_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

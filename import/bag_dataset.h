@@ -49,7 +49,7 @@ struct BagDataset {
   ImuNoise imu_noise;  // from the message covariances where meaningful, else the defaults
   OdometerNoise odom_noise;
   std::vector<std::string> noise_sources;  // one line per value: "covariance" or "default"
-  std::string imu_accel_unit = "m/s^2";  // the unit the bag's accelerations were in (converted)
+  std::string imu_accel_unit = "m/s^2";    // the unit the bag's accelerations were in (converted)
   bool utc_stamps = true;  // false: stamps are not UTC (simulated or relative ROS time), kept as is
   int leap_seconds = 0;    // GPS - UTC applied
   std::vector<std::string> warnings;
@@ -58,8 +58,8 @@ struct BagDataset {
 /// Reads the bag; throws std::runtime_error naming the bag and the topic or type for a bag without
 /// an IMU or odometry topic, ambiguous or unknown topics, messages that do not decode, sensors
 /// whose stamps are not on one time base, and an IMU whose mean specific force is gravity in no
-/// unit. Accelerations in g or mg are converted to m/s^2 (imu_accel_unit, a warning). `progress` (may be empty) is called with the share of
-/// the messages read (it may throw to stop).
+/// unit. Accelerations in g or mg are converted to m/s^2 (imu_accel_unit, a warning). `progress`
+/// (may be empty) is called with the share of the messages read (it may throw to stop).
 BagDataset readBagDataset(const BagSource& bag, const BagTopics& topics,
                           const std::function<void(double)>& progress = {});
 
