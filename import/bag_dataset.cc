@@ -8,8 +8,10 @@
 #include <stdexcept>
 
 #include "common/geodesy/wgs84.h"
-#include "common/imu/accel_units.h"
+#include "common/io/text.h"
+#include "common/math/median.h"
 #include "common/time/gps_time.h"
+#include "import/bag_sensor_noise.h"
 #include "import/gnss_comm_messages.h"
 #include "import/ublox_messages.h"
 
@@ -76,12 +78,6 @@ RosSchema schemaOf(const BagSource& bag, const BagTopic& t) {
   }
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
 // Per topic: header stamps and receive times of the samples kept, the times chosen, their offsets
 // from the receive times, the first covariances.
 struct Stream {
@@ -118,44 +114,6 @@ void applyTimes(std::vector<T>& samples, Stream& s, bool record) {
   s.counts->record_times = record;
 }
 
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-  return buf;
-}
-
-// A noise value from a covariance when it lies in the range a real sensor's can, else the default.
-double noiseValue(double from_covariance, double lo, double hi, double fallback,
-                  const std::string& name, std::vector<std::string>& sources) {
-  const bool ok = std::isfinite(from_covariance) && from_covariance >= lo && from_covariance <= hi;
-  sources.push_back(name + ": " +
-                    (ok ? "message covariance" : "default (covariance absent or implausible)"));
-  return ok ? from_covariance : fallback;
-}
-
-void setNoise(BagDataset& out, const Stream* imu, const Stream* odom) {
-  std::vector<double> dt;
-  for (std::size_t k = 1; k < out.imu.size(); ++k) dt.push_back(out.imu[k].t - out.imu[k - 1].t);
-  const double imu_dt = median(dt);
-  auto density = [&](const std::vector<double>& c, std::size_t from) {
-    if (c.size() < from + 3 || c[from] < 0.0) return std::nan("");  // -1: not provided
-    return std::sqrt((c[from] + c[from + 1] + c[from + 2]) / 3.0 * imu_dt);
-  };
-  ImuNoise& n = out.imu_noise;
-  n.gyro_noise_density = noiseValue(density(imu->covariance, 0), 1e-5, 1e-1, n.gyro_noise_density,
-                                    "imu gyro_noise_density", out.noise_sources);
-  n.accel_noise_density = noiseValue(density(imu->covariance, 3), 1e-4, 1.0, n.accel_noise_density,
-                                     "imu accel_noise_density", out.noise_sources);
-  out.noise_sources.push_back(
-      "imu bias random walks and sigmas: default (ROS messages carry none)");
-  OdometerNoise& o = out.odom_noise;
-  const auto& c = odom->covariance;
-  o.speed_sigma = noiseValue(c.size() == 2 && c[0] > 0 ? std::sqrt(c[0]) : NAN, 1e-4, 1.0,
-                             o.speed_sigma, "odometer speed_sigma", out.noise_sources);
-  o.yaw_rate_sigma = noiseValue(c.size() == 2 && c[1] > 0 ? std::sqrt(c[1]) : NAN, 1e-4, 1.0,
-                                o.yaw_rate_sigma, "odometer yaw_rate_sigma", out.noise_sources);
-}
-
 void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams, const BagSource& bag,
                       StampSource mode) {
   std::vector<TopicStamps> stamps;
@@ -190,12 +148,12 @@ void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams, c
     const double m = median(s.offsets);
     lo = std::min(lo, m);
     hi = std::max(hi, m);
-    offsets += " " + name + " " + fixed(m, 3) + " s;";
+    offsets += " " + name + " " + fixedText(m, 3) + " s;";
   }
   if (hi - lo > kMaxStampDisagreement) {
     out.warnings.push_back(bag.path() +
                            ": header stamps minus recording times differ by more than " +
-                           fixed(kMaxStampDisagreement, 0) + " s between sensors:" + offsets +
+                           fixedText(kMaxStampDisagreement, 0) + " s between sensors:" + offsets +
                            " one sensor's clock or stamping is off by about the difference");
   }
   for (const auto& [name, s] : streams) {
@@ -212,32 +170,17 @@ void finishBagDataset(BagDataset& out, std::map<std::string, Stream>& streams, c
                              " fixes with status NO_FIX dropped");
     if (c.largest_gap_s > 1.0)
       out.warnings.push_back(bag.path() + ": topic " + name + ": a gap of " +
-                             fixed(c.largest_gap_s, 2) + " s between messages");
+                             fixedText(c.largest_gap_s, 2) + " s between messages");
   }
   if (out.imu.size() < 2 || out.odom.size() < 2) {
     throw std::runtime_error(bag.path() + ": fewer than 2 usable IMU or odometry messages");
   }
-  // sensor_msgs/Imu says m/s^2, but drivers publish g too (a real Husky: mean |f| 1.03).
   Stream& imu_stream = streams.at(out.imu_counts.topic);
-  const AccelUnit unit = accelUnitOf(out.imu);
-  if (!unit.decided) {
-    throw std::runtime_error(
-        accelUnitProblem(unit, bag.path() + ": topic " + out.imu_counts.topic));
-  }
-  out.imu_accel_unit = unit.name;
-  if (unit.to_si != 1.0) {
-    for (ImuSample& s : out.imu) s.acc *= unit.to_si;
-    for (std::size_t k = 3; k < imu_stream.covariance.size(); ++k)
-      if (imu_stream.covariance[k] > 0.0) imu_stream.covariance[k] *= unit.to_si * unit.to_si;
-    out.warnings.push_back(bag.path() + ": topic " + out.imu_counts.topic +
-                           ": linear_acceleration in " + unit.name + " (mean |f| " +
-                           fixed(unit.mean_norm, 3) + "), not m/s^2: converted (x " +
-                           fixed(unit.to_si, 5) + ")");
-  }
-  setNoise(out, &imu_stream, &streams.at(out.odom_counts.topic));
+  convertAccelUnits(out, imu_stream.covariance, bag.path());
+  setSensorNoise(out, imu_stream.covariance, streams.at(out.odom_counts.topic).covariance);
   if (!out.utc_stamps) {
     out.warnings.push_back(bag.path() + ": stamps are not wall-clock time (the first is " +
-                           fixed(out.imu.front().t, 3) +
+                           fixedText(out.imu.front().t, 3) +
                            " s): kept as they are, so GNSS cannot be aligned");
     return;
   }

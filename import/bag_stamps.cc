@@ -5,24 +5,15 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "common/io/text.h"
+#include "common/math/median.h"
+
 namespace giocal::import {
 
 namespace {
 
 constexpr double kMaxRepeatShare = 0.1;  // header stamps not after the previous one, at most
 constexpr double kFarFromRecord = 10.0;  // [s] median header stamp - record time, at most
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
-std::string text(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-  return buf;
-}
 
 double medianOffset(const TopicStamps& t) {
   std::vector<double> d;
@@ -71,7 +62,7 @@ std::vector<bool> useRecordTimes(const std::vector<TopicStamps>& topics, StampSo
     if (!(std::abs(offset[i]) > kFarFromRecord)) continue;
     record[i] = true;
     warnings.push_back(bag + ": topic " + topics[i].topic + ": header stamps " +
-                       text(offset[i], 3) + " s from the record times, while " + near +
+                       fixedText(offset[i], 3) + " s from the record times, while " + near +
                        " follows them: the bag's record times used instead (--stamps header "
                        "keeps them)");
   }

@@ -1,7 +1,7 @@
 // The Calibrator's event loop: initialization attempts as data arrive, odometer and GNSS events
 // handed to the estimator core in time order once the data around them are complete,
-// re-initialization after a divergence, live reports, trimming of the buffers, and the end of a
-// run. (The input side, reordering and bad data, is in calibrator.cc.)
+// re-initialization after a divergence, live reports, trimming of the buffers. (The input side,
+// reordering and bad data, is in calibrator.cc; the end of a run in calibrator_finish.cc.)
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -19,11 +19,6 @@
 
 namespace giocal {
 namespace {
-
-// An odometer delay is worth a word when it is this large and known this well [s].
-constexpr double kDelayToTell = 0.01;
-constexpr double kDelaySigmaToTell = 0.01;
-constexpr double kDelayFirstOrder = 0.1;  // [s] the delay state's first-order model
 
 /// Drops the samples before t but the last one before it (interpolation needs it), once they are
 /// at least half the buffer (amortized constant cost per sample).
@@ -301,103 +296,6 @@ void Calibrator::restartAfterGap(double t0, double t1) {
   t_from_ = std::max(t_from_, t1);
   last_init_try_ = -INFINITY;
   init_cache_ = {};
-}
-
-void Calibrator::finish() {
-  BusyTimer busy(busy_s_);
-  finishing_ = true;
-  for (auto& ahead : ahead_) {  // no next datum of its sensor came to confirm the jump
-    if (ahead) {
-      dropped(Counter::kFutureSamples, ahead->first,
-              "the last datum of a sensor, stamped " +
-                  fixedText(ahead->first - reorder_.newest(), 1) + " s ahead of all other data");
-    }
-    ahead.reset();
-  }
-  reorder_.release([&](double, Datum& x) { release(x); }, true);
-  process();
-  const std::string why = why_not_initialized_.empty()
-                              ? std::string("no rover epoch with IMU and odometer data around it")
-                              : why_not_initialized_;
-  if (!core_ && run_.latest) {
-    run_.warn("no re-initialization possible after t=" + timeText(t_from_) + ": " + why);
-    run_.status = "partial: " + std::string(diverged_ ? "the estimator diverged" : "an IMU gap") +
-                  " before t=" + timeText(t_from_) +
-                  " and the data after it allow no new initial state (" + why +
-                  "); the calibration is the last one before it";
-  } else if (!core_) {
-    if (!diverged_) {
-      throw std::runtime_error("could not initialize: " + why);
-    }
-    run_.warn("no re-initialization possible after t=" + timeText(t_from_) + ": " + why);
-  }
-  if (core_ && (!run_.latest || run_.latest->t < core_->time())) onEstimate(core_->calibration());
-  if (run_.latest) {
-    for (const std::string& w :
-         weakDirections(*run_.latest, original_.initial_calibration, convergence_.held()))
-      run_.warn(w);
-  }
-  for (const std::string& w : rejectionShareWarnings(run_, positionsOnly())) run_.warn(w);
-  warnAboutUnusedGnss();
-  if (const long n = run_.counter(Counter::kNumericalFailures); n > 0) {
-    run_.warn(std::to_string(n) +
-              " updates, solves or ambiguity searches failed numerically (counter "
-              "numerical_failures; not gate rejections): the estimator skipped them, and the "
-              "calibration rests on the rest");
-  }
-  // `ok` means the run believes its answer; one whose estimate has left its data does not.
-  const std::string suspect = suspectReason(run_, positionsOnly(), options_.loosely_coupled);
-  if (run_.status == "ok" && !suspect.empty()) run_.status = "suspect: " + suspect;
-  if (!dataset_.odom_noise.measures_yaw_rate) {
-    const CalibrationPrior& p = original_.initial_calibration;
-    run_.warn(
-        "s_w is not calibrated: the odometer measures speed only (odometer.measures_yaw_rate: "
-        "false in dataset.yaml); it keeps the initial guess " +
-        fixedText(p.mean.s_w, 4) + " +- " + fixedText(p.sd_s_w, 4));
-  }
-  run_.odometer_delay = odometer_delay_.estimate();
-  const OdometerDelay& d = run_.odometer_delay;
-  const bool estimated = run_.latest && std::isfinite(run_.latest->odometer_delay_s);
-  if (estimated && std::abs(run_.latest->odometer_delay_s) > kDelayFirstOrder) {
-    const double t_d = run_.latest->odometer_delay_s;
-    run_.warn("the estimated odometer delay (" + fixedText(1e3 * t_d, 0) + " ms) is beyond the " +
-              fixedText(1e3 * kDelayFirstOrder, 0) +
-              " ms its first-order model holds: set time_offsets: {odometer: " +
-              fixedText(dataset_.time_offsets.odometer - t_d, 3) + "} in dataset.yaml");
-  } else if (estimated && d.valid &&
-             std::abs(run_.latest->odometer_delay_s - d.delay_s) >
-                 3.0 * std::hypot(run_.latest->odometer_delay_sd_s, d.sigma_s)) {
-    // Seen on the real Husky: the state stayed at zero whatever offset was set, the yaw rates
-    // followed it (docs/results.md). The yaw-rate measure is direct; the state is a model.
-    const double t_d = run_.latest->odometer_delay_s;
-    run_.warn("the odometer's delay as a calibration state (" + fixedText(1e3 * t_d, 0) + " +- " +
-              fixedText(1e3 * run_.latest->odometer_delay_sd_s, 0) +
-              " ms) disagrees with the one the yaw rates show (" + fixedText(1e3 * d.delay_s, 0) +
-              " +- " + fixedText(1e3 * d.sigma_s, 0) +
-              " ms): its model does not fit this odometer; set time_offsets: {odometer: " +
-              fixedText(dataset_.time_offsets.odometer - d.delay_s, 3) +
-              "} in dataset.yaml and calibrate without the state");
-  } else if (!estimated && d.valid && d.sigma_s < kDelaySigmaToTell &&
-             std::abs(d.delay_s) > kDelayToTell && std::abs(d.delay_s) > 3.0 * d.sigma_s) {
-    run_.warn("the odometer's stamps are " + fixedText(1e3 * std::abs(d.delay_s), 0) + " +- " +
-              fixedText(1e3 * d.sigma_s, 0) + " ms " + (d.delay_s > 0 ? "late" : "early") +
-              " against the IMU's (the yaw rate both measure): set time_offsets: {odometer: " +
-              fixedText(dataset_.time_offsets.odometer - d.delay_s, 3) + "} in dataset.yaml");
-  }
-  run_.t_first_rover_epoch = t_rover_first_;
-  if (!std::isnan(t_imu_first_) && !std::isnan(t_rover_first_)) {
-    run_.data_duration_s = std::max(
-        0.0, std::min(t_imu_last_, t_rover_last_) - std::max(t_imu_first_, t_rover_first_));
-  }
-  run_.timing["initialization_s"] = init_time_s_;
-  run_.timing["gnss_epoch_mean_s"] = latency_.mean();
-  run_.timing["gnss_epoch_p50_s"] = latency_.percentile(0.5);
-  run_.timing["gnss_epoch_p99_s"] = latency_.percentile(0.99);
-  run_.timing["gnss_epoch_max_s"] = latency_.max();
-  // The calibrator's own time: what the sink does with the results (writing the output files,
-  // checking fixes against a truth file) is the caller's, reported apart.
-  run_.timing["outputs_s"] = sink_s_;
-  run_.wall_time_s = busy_s_ - sink_s_;
 }
 
 }  // namespace giocal

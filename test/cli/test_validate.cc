@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "field_laps.h"
 #include "run_giocal.h"
 #include "temp_dir.h"
 
@@ -20,23 +21,11 @@ nlohmann::json summaryOf(const std::string& dir) {
 // dead-reckons every window better than the guess, against the dataset's own RTK fixes.
 TEST(Validate, ACalibrationOfASimulatedDriveIsBetterThanTheGuessInEveryWindow) {
   test::TempDir dir;
-  // The field preset with 3 of its 10 laps, its nav file's path made absolute for the copy.
-  std::string preset;
-  {
-    std::ifstream in(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
-    for (std::string line; std::getline(in, line);) {
-      if (line.find("  laps: 10") == 0) line = "  laps: 3";
-      const size_t rel = line.find("../../data/");
-      if (rel != std::string::npos)
-        line.replace(rel, 11, std::string(GIOCAL_SOURCE_DIR) + "/data/");
-      preset += line + "\n";
-    }
-  }
-  std::ofstream(dir.file("field3.yaml")) << preset;
-  ASSERT_EQ(test::runGiocal("simulate --config " + dir.file("field3.yaml") + " --out " +
-                            dir.file("data") + " --seed 3201")
-                .code,
-            0);
+  const std::string preset = test::fieldPresetWithLaps(dir, 3);
+  ASSERT_EQ(
+      test::runGiocal("simulate --config " + preset + " --out " + dir.file("data") + " --seed 3201")
+          .code,
+      0);
   ASSERT_EQ(
       test::runGiocal("calibrate --data " + dir.file("data") + " --quiet --out " + dir.file("cal"))
           .code,

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "field_laps.h"
 #include "run_giocal.h"
 #include "temp_dir.h"
 
@@ -15,20 +16,6 @@ namespace {
 nlohmann::json summaryOf(const std::string& dir) {
   std::ifstream in(dir + "/summary.json");
   return nlohmann::json::parse(in);
-}
-
-/// The field preset with 3 of its 10 laps, its nav file's path made absolute for the copy.
-std::string threeLaps(const test::TempDir& dir) {
-  std::string preset;
-  std::ifstream in(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
-  for (std::string line; std::getline(in, line);) {
-    if (line.find("  laps: 10") == 0) line = "  laps: 3";
-    const size_t rel = line.find("../../data/");
-    if (rel != std::string::npos) line.replace(rel, 11, std::string(GIOCAL_SOURCE_DIR) + "/data/");
-    preset += line + "\n";
-  }
-  std::ofstream(dir.file("field3.yaml")) << preset;
-  return dir.file("field3.yaml");
 }
 
 double rms(const std::vector<double>& v) {
@@ -44,7 +31,7 @@ double rms(const std::vector<double>& v) {
 // preset's -0.13 deg, docs/results.md) is carried (0.155 deg RMS against 0.138).
 TEST(WarmStart, ASecondDriveFromTheFirstsCalibrationConvergesEarlierAndEndsCloser) {
   test::TempDir dir;
-  const std::string preset = threeLaps(dir);
+  const std::string preset = test::fieldPresetWithLaps(dir, 3);
   const auto run = [](const std::string& args) {
     const test::GiocalResult r = test::runGiocal(args);
     EXPECT_EQ(r.code, 0) << args << "\n" << r.out;
