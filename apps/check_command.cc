@@ -1,5 +1,6 @@
 #include "apps/check_command.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -75,8 +76,9 @@ std::string importedUnitNote(const std::string& folder) {
 
 }  // namespace
 
-void runCheck(const std::string& folder, std::ostream& out) {
-  const DatasetDescription d = readDatasetDescription(folder);
+void runCheck(DatasetFolder& data, std::ostream& out) {
+  const DatasetDescription& d = data.description;
+  const std::string& folder = data.folder;
   out << "dataset " << folder << "\n";
   std::vector<std::string> warnings;
   const std::vector<ImuSample> imu = readImuCsv(d.pathOf(d.imu), &warnings);
@@ -111,7 +113,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
   std::map<std::string, ObsData> gnss;
   for (const std::string& f : {d.rover_obs, d.base_obs}) {
     if (f.empty()) continue;
-    if (!std::filesystem::exists(d.pathOf(f))) {
+    if (std::count(data.missing.begin(), data.missing.end(), f)) {
       out << "  " << f << ": MISSING\n";
       missing.push_back(f);
       continue;
@@ -127,7 +129,7 @@ void runCheck(const std::string& folder, std::ostream& out) {
   }
   std::vector<NavData> navs;
   for (const std::string& f : d.nav) {
-    if (!std::filesystem::exists(d.pathOf(f))) {
+    if (std::count(data.missing.begin(), data.missing.end(), f)) {
       out << "  " << f << ": MISSING\n";
       missing.push_back(f);
       continue;
@@ -151,6 +153,8 @@ void runCheck(const std::string& folder, std::ostream& out) {
                                 d.pathOf(d.odom)});
   }
   for (const std::string& u : unusable) out << "  unusable: " << u << "\n";
+  for (const std::string& w : warnings) data.findings.push_back("warning: " + w);
+  for (const std::string& u : unusable) data.findings.push_back("unusable: " + u);
   if (!unusable.empty()) {
     throw std::runtime_error("the dataset cannot be calibrated: " + unusable.front() +
                              (unusable.size() > 1

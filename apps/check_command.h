@@ -2,11 +2,13 @@
 #pragma once
 
 #include <iosfwd>
-#include <string>
+
+#include "common/io/dataset_folder.h"
 
 namespace giocal {
 
-/// Throws DataError (file:line: problem) on the first bad input.
-void runCheck(const std::string& folder, std::ostream& out);
+/// Throws DataError (file:line: problem) on the first bad input; what it finds short of that
+/// (warnings, unusable conditions) is also kept in `data.findings`.
+void runCheck(DatasetFolder& data, std::ostream& out);
 
 }  // namespace giocal

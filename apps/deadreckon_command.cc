@@ -45,7 +45,8 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   dr.start_s = job.start_s;
   dr.duration_s = job.duration_s;
   dr.options.loosely_coupled = !job.positions.empty();
-  CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
+  const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
+  CalibrationInputs in = loadCalibrationInputs(data, job.positions);
   checkStop(job.stop);
   const CalibrationSource source = readCalibrationSource(job.calibration, in);
   applyCalibrationSource(source, dr, in.odom);

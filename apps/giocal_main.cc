@@ -97,7 +97,8 @@ int runCheckCommand(int argc, char** argv) {
                            "giocal check: reads a dataset folder and says whether it can be "
                            "calibrated (or which condition makes it unusable)",
                            "giocal check --data data/sim/paper");
-  giocal::runCheck(vm["data"].as<std::string>(), std::cout);
+  giocal::DatasetFolder data = giocal::openDatasetFolder(vm["data"].as<std::string>());
+  giocal::runCheck(data, std::cout);
   std::cout << "ok\n";
   return 0;
 }

@@ -59,7 +59,8 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   // Without a truth or a given solution, the drive's motion comes from giocal rtk's solution.
   std::string positions = job.positions;
   std::unique_ptr<TempPosFile> own_rtk;
-  const DatasetDescription d = readDatasetDescription(job.data);
+  const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
+  const DatasetDescription& d = data.description;
   if (positions.empty() && d.truth.empty()) {
     requireRawGnss(d);
     own_rtk = std::make_unique<TempPosFile>();
@@ -72,7 +73,7 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
     rtk.out = positions = own_rtk->path;
     runRtk(rtk);
   }
-  CalibrationInputs in = loadCalibrationInputs(job.data, positions);
+  CalibrationInputs in = loadCalibrationInputs(data, positions);
   ObservabilityJob oj;
   oj.options = config.calibration;
   oj.window_s = job.window_s;

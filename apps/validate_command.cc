@@ -62,7 +62,8 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   if (job.outage_s < 5.0 || job.windows < 1)
     throw std::runtime_error("--outage must be at least 5 s and --windows at least 1");
   const GiocalConfig config = readGiocalConfig(job.config);
-  const CalibrationInputs in = loadCalibrationInputs(job.data, job.positions);
+  const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
+  const CalibrationInputs in = loadCalibrationInputs(data, job.positions);
   OutputSet outputs(job.out);
   std::vector<PositionFix> reference_fixes;
   std::string reference;

@@ -18,8 +18,12 @@ double CalibrationInputs::dataDuration() const {
 }
 
 CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::string& positions) {
+  return loadCalibrationInputs(openDatasetFolder(folder), positions);
+}
+
+CalibrationInputs loadCalibrationInputs(const DatasetFolder& data, const std::string& positions) {
   CalibrationInputs in;
-  in.description = readDatasetDescription(folder);
+  in.description = data.description;
   const DatasetDescription& d = in.description;
   auto need = [&](const std::string& name) {
     const std::string p = d.pathOf(name);
@@ -36,8 +40,7 @@ CalibrationInputs loadCalibrationInputs(const std::string& folder, const std::st
     // A speed-only odometer turns with the gyro (as the online calibrator's samples do).
     for (OdomSample& s : in.odom) s.w = gyroYawRate(in.imu, s.t, d.initial_calibration.mean);
   }
-  const std::string truth = folder + "/truth_calib.yaml";
-  if (std::filesystem::exists(truth)) in.truth = readTruthCalibration(truth);
+  in.truth = data.truth;
   if (!positions.empty()) {
     in.positions = readPosFile(positions, &in.warnings);
     if (in.positions.empty()) throw DataError(positions, 0, "no position solutions");

@@ -13,6 +13,7 @@
 #include "common/gnss/rinex_nav.h"
 #include "common/imu/imu_sample.h"
 #include "common/io/dataset_description.h"
+#include "common/io/dataset_folder.h"
 #include "common/odometer/odom_sample.h"
 
 namespace giocal {
@@ -36,6 +37,9 @@ struct CalibrationInputs {
 /// samples, no base position, logs that do not overlap in time). `positions`: a .pos solution
 /// file read into `positions` (the LC scheme); a dataset without raw GNSS then gets epochs
 /// without observations at the solutions' times, and the first solution as its origin.
+CalibrationInputs loadCalibrationInputs(const DatasetFolder& data,
+                                        const std::string& positions = "");
+/// The same for a folder not yet opened (opens it).
 CalibrationInputs loadCalibrationInputs(const std::string& folder,
                                         const std::string& positions = "");
 

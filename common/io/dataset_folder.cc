@@ -19,6 +19,12 @@ DatasetFolder openDatasetFolder(const std::string& folder) {
   const std::string scenes = folder + "/scenes.csv";
   if (std::filesystem::exists(scenes)) d.scenes = readScenesCsv(scenes);
   if (const auto span = csvTimeSpan(d.path(d.description.imu))) d.imu_span = *span;
+  const DatasetDescription& f = d.description;
+  std::vector<std::string> named{f.imu, f.odom, f.rover_obs, f.base_obs, f.truth};
+  named.insert(named.end(), f.nav.begin(), f.nav.end());
+  for (const std::string& n : named) {
+    if (!n.empty() && !std::filesystem::exists(d.path(n))) d.missing.push_back(n);
+  }
   return d;
 }
 

@@ -1,5 +1,6 @@
 // DatasetFolder: a dataset folder opened once per run (its description, the paths of its files,
-// its truth and scenes when it has them, the span of its IMU log), handed to whatever needs it.
+// the files it names and lacks, its truth and scenes when it has them, the span of its IMU log,
+// and what `giocal check` found), handed to whatever needs it.
 #pragma once
 
 #include <optional>
@@ -18,6 +19,10 @@ struct DatasetFolder {
   std::optional<TruthCalibration> truth;         // truth_calib.yaml, when there
   std::vector<SceneSpan> scenes;                 // scenes.csv, when there
   std::pair<double, double> imu_span{0.0, 0.0};  // first and last IMU time; {0, 0}: unknown
+  std::vector<std::string> missing;  // files dataset.yaml names that are not there, by name
+  /// What reading the whole logs found (giocal check): "warning: ..." and "unusable: ..." lines,
+  /// each naming its file. A calibration streams the logs and does not fill them.
+  std::vector<std::string> findings;
   /// The path of one of its files (a name from the description).
   std::string path(const std::string& name) const { return description.pathOf(name); }
   bool hasTruthTrajectory() const;  // truth.csv named and present

@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "common/io/data_error.h"
 #include "common/io/dataset_description.h"
+#include "common/io/dataset_folder.h"
 #include "common/math/rotation.h"
 #include "temp_dir.h"
 
@@ -105,6 +108,24 @@ TEST(TruthCalibration, RoundTripAndConsistency) {
   EXPECT_THROW(readTruthCalibration(dir.file("bad.yaml")), DataError);
   dir.write("noq.yaml", "s_v: 0\ns_w: 0\np_b_m: [0,0,0]\np_b_g: [0,0,0]\n");
   EXPECT_THROW(readTruthCalibration(dir.file("noq.yaml")), DataError);
+}
+
+TEST(DatasetFolder, NamesTheFilesItLacksAndReadsTheDescriptionOnce) {
+  test::TempDir dir;
+  DatasetDescription d = sampleDescription(dir.path());
+  writeDatasetDescription(d);
+  std::ofstream(dir.file("imu.csv"))
+      << "t,wx,wy,wz,ax,ay,az\n10,0,0,0,0,0,9.8\n12.5,0,0,0,0,0,9.8\n";
+  std::ofstream(dir.file("nav2.rnx")) << "";
+  const DatasetFolder data = openDatasetFolder(dir.path());
+  // odom.csv, rover.obs, base.obs, truth.csv and nav1.rnx are named and not there.
+  EXPECT_EQ(data.missing, (std::vector<std::string>{"odom.csv", "rover.obs", "base.obs",
+                                                    "truth.csv", "nav1.rnx"}));
+  EXPECT_DOUBLE_EQ(data.imu_span.first, 10.0);
+  EXPECT_DOUBLE_EQ(data.imu_span.second, 12.5);
+  EXPECT_EQ(data.description.nav, d.nav);
+  EXPECT_TRUE(data.findings.empty());  // only giocal check fills them
+  EXPECT_FALSE(data.hasTruthTrajectory());
 }
 
 }  // namespace
