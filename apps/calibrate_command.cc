@@ -14,8 +14,8 @@
 #include "common/math/rotation.h"
 #include "options/giocal_config.h"
 #include "replay/estimator_factory.h"
-#include "replay/measured_delay.h"
 #include "replay/replay.h"
+#include "replay/run_preparation.h"
 
 namespace giocal {
 
@@ -104,12 +104,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
            " days earlier; covariance grown by calibration.warm_start's drift per sqrt(day))";
     log << "  " << warm << "\n";
   }
-  // An odometer measured late beyond doubt is put back on time before calibrating.
-  const double applied = applyMeasuredOdometerDelay(data, replay.options);
-  if (applied != 0.0) {
-    log << "  the odometer's stamps are " << fixedText(applied * 1e3, 0)
-        << " ms late against the IMU's (measured on the logs): taken out for this run\n";
-  }
+  const RunPreparation prepared = prepareRun(data, replay, log);
   OutputSet outputs(job.out);
   const auto span = data.imu_span;
   ProgressLine progress("calibrate " + job.estimator, span.first, span.second, job.quiet);
@@ -120,10 +115,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
       replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
   if (audit) audit->addTo(run);
   progress.clear();
-  if (applied != 0.0) {
-    run.odometer_delay_applied_s = applied;
-    run.warn(appliedDelayWarning(applied, data));
-  }
+  notePreparation(prepared, data, run);
   if (!warm.empty()) run.warn(warm);
   const std::optional<TruthCalibration>& truth = data.truth;
   writer.finish(run, truth ? &truth->calib : nullptr);

@@ -11,8 +11,8 @@
 #include "common/calibration/fix_audit.h"
 #include "common/math/rotation.h"
 #include "options/giocal_config.h"
-#include "replay/measured_delay.h"
 #include "replay/replay.h"
+#include "replay/run_preparation.h"
 
 namespace giocal {
 namespace {
@@ -43,8 +43,8 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
   replay.options.loosely_coupled = !job.positions.empty();
   replay.stop = job.stop;
   DatasetFolder data = openDatasetFolder(job.data);  // once for both runs
-  // An odometer measured late beyond doubt is put back on time before calibrating (as calibrate).
-  const double applied = applyMeasuredOdometerDelay(data, replay.options);
+  // The odometer's delay and the solutions' heights, measured and acted on as calibrate does.
+  const RunPreparation prepared = prepareRun(data, replay, log);
   OutputSet outputs(out);
   const std::optional<TruthCalibration>& truth_file = data.truth;
   const OdometerCalibration* truth = truth_file ? &truth_file->calib : nullptr;
@@ -60,10 +60,7 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
     runs[a] = replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
     if (audit) audit->addTo(runs[a]);
     progress.clear();
-    if (applied != 0.0) {
-      runs[a].odometer_delay_applied_s = applied;
-      runs[a].warn(appliedDelayWarning(applied, data));
-    }
+    notePreparation(prepared, data, runs[a]);
     writer.finish(runs[a], truth);
   }
 

@@ -14,6 +14,7 @@
 #include "evaluation/calibration_source.h"
 #include "evaluation/dead_reckoning.h"
 #include "options/giocal_config.h"
+#include "replay/measured_heights.h"
 
 namespace giocal {
 namespace {
@@ -48,6 +49,8 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   CalibrationInputs in = loadCalibrationInputs(data, job.positions);
   checkStop(job.stop);
+  // The GNSS-aided part weighs the solutions' heights as calibrate did.
+  if (dr.options.loosely_coupled) applyFixHeights(measureFixHeights(in), dr.options);
   const CalibrationSource source = readCalibrationSource(job.calibration, in);
   applyCalibrationSource(source, dr, in.odom);
   std::string reference_path = job.reference;

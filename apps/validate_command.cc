@@ -13,6 +13,7 @@
 #include "common/io/progress_line.h"
 #include "evaluation/validation.h"
 #include "options/giocal_config.h"
+#include "replay/measured_heights.h"
 
 namespace giocal {
 
@@ -84,6 +85,8 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   v.windows = job.windows;
   v.options = config.calibration;
   v.options.loosely_coupled = !job.positions.empty();
+  // The GNSS-aided stretches weigh the solutions' heights as calibrate did.
+  if (v.options.loosely_coupled) applyFixHeights(measureFixHeights(in), v.options);
   ProgressLine progress("validate", 0.0, 1.0, job.quiet, "of the windows");
   v.progress = [&](double share) {
     progress.update(share);

@@ -10,7 +10,7 @@ set(GIOCAL_SLOW_TESTS
   ImuGaps.BothEstimatorsBridgeOrRestartAndStayWithinTwiceTheCleanError
   OnlineCalibrator.TheGyroTiltIsEstimatedByBothEstimators
   RealHusky.LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes
-  RealHusky.FixesTheGateRefusesAreNamedWithWhatToChange
+  RealHusky.DefaultsWeighTheWanderingHeightsByWhatTheDriveShows
   DegradedRuns.BothEstimatorsSayWhenTheyDivergeAndStartAgain
   OnlineCalibrator.BothEstimatorsWeighTheNonHolonomicConstraintAlike
   SimulateTrajectory.TheSimulatorsOwnGnssAndAntennaPathGiveItsDriveAndCalibration
@@ -37,7 +37,8 @@ set(GIOCAL_REAL_TESTS
   Ephemeris.VelocityAndClockDriftAreTheDerivativesOfPositionAndClock
   PosFile.ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances
   RealHusky.AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed
-  RealHusky.FixesTheGateRefusesAreNamedWithWhatToChange
+  RealHusky.DefaultsWeighTheWanderingHeightsByWhatTheDriveShows
+  RealHusky.HeightsLeftOutByHandAreNotChecked
   RealHusky.LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes
   RinexObs.EventFlagRecordsAreSkipped
   Rtk.BadInputIsReported

@@ -62,6 +62,7 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.divergence_sigma = y.numberOr(s + "divergence_sigma", o.divergence_sigma, 5.0, 1e6);
   o.lc.sigma_scale = y.numberOr(s + "lc.sigma_scale", o.lc.sigma_scale, 1e-3, 1e3);
   o.lc.use_height = flag("lc.use_height", o.lc.use_height);
+  o.lc.learn_heights = flag("lc.learn_heights", o.lc.learn_heights);
   const std::string i = s + "init.";
   o.init.static_speed = y.numberOr(i + "static_speed", o.init.static_speed, 0.0, 1.0);
   o.init.min_static_s = y.numberOr(i + "min_static_s", o.init.min_static_s, 0.1, 1e3);

@@ -100,7 +100,7 @@ struct CalibrationOptions {
   // initial heading comes from the solutions too. Without raw GNSS the solutions are the epochs.
   // Not a YAML key.
   bool loosely_coupled = false;
-  PositionWeighting lc;              // calibration.lc.sigma_scale, calibration.lc.use_height
+  PositionWeighting lc;              // calibration.lc.sigma_scale, .use_height, .learn_heights
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale

@@ -211,6 +211,17 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
   }
   if (run.odometer_delay_applied_s != 0.0)
     j["odometer_delay"]["applied_s"] = run.odometer_delay_applied_s;
+  if (run.lc_heights) {
+    const FixHeights& h = *run.lc_heights;
+    j["lc_heights"] = {{"decided", h.decided},
+                       {"fixes", h.fixes},
+                       {"distance_m", h.distance_m},
+                       {"spread_m", h.spread_m},
+                       {"reported_sigma_m", h.reported_sigma_m},
+                       {"scale", h.scale()},
+                       {"applied_scale", run.lc_height_scale_applied}};
+    if (!h.decided) j["lc_heights"]["why_not"] = h.why_not;
+  }
   if (!run.robot.empty()) j["robot"] = run.robot;
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;

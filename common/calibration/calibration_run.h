@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/calibration/fix_heights.h"
 #include "common/calibration/odometer_delay.h"
 #include "common/calibration/run_counter.h"
 #include "common/geodesy/wgs84.h"
@@ -66,6 +67,10 @@ struct CalibrationRun {
   // The delay a first pass measured and this run took out of the odometer's stamps (calibrate's
   // calibration.apply_odometer_delay_*) [s]; 0 when none.
   double odometer_delay_applied_s = 0.0;
+  // The LC solutions' heights checked against the IMU and odometer before the run
+  // (fix_heights.h), and the scale this run put on their height sigmas (0: none).
+  std::optional<FixHeights> lc_heights;
+  double lc_height_scale_applied = 0.0;
   // The robot the calibration belongs to (warm_start.h's robotFingerprint of dataset.yaml): a
   // later drive's --prior is refused when it differs.
   std::map<std::string, double> robot;

@@ -29,6 +29,8 @@ PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix,
   // ENU at the fix to n (the ENU frame at the origin): R_n_e R_e_enu.
   const Mat3 R = frame.R_e_n().transpose() * rotationEcefFromEnu(g.lat, g.lon);
   Mat3 cov_enu = fix.cov_enu * weighting.sigma_scale * weighting.sigma_scale;
+  cov_enu.row(2) *= weighting.height_sigma_scale;
+  cov_enu.col(2) *= weighting.height_sigma_scale;
   if (!weighting.use_height) {
     cov_enu.row(2).setZero();
     cov_enu.col(2).setZero();

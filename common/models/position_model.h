@@ -29,9 +29,12 @@ class PositionModel : public MeasurementModel {
 /// How far a position solution's own covariance is believed (the LC scheme's YAML keys
 /// calibration.lc.*). Consumer receivers report sigmas their errors, slow and metres large, exceed.
 struct PositionWeighting {
-  double sigma_scale = 1.0;  // the solution's sigmas are multiplied by this
-  bool use_height = true;    // false: the height is left out (its variance made 1e6 m^2), as
-                             // robot_localization's zero_altitude does for 2D robots
+  double sigma_scale = 1.0;         // the solution's sigmas are multiplied by this
+  bool use_height = true;           // false: the height is left out (its variance made 1e6 m^2), as
+                                    // robot_localization's zero_altitude does for 2D robots
+  double height_sigma_scale = 1.0;  // the height's sigma multiplied by this too (learned from the
+                                    // drive, replay/measured_heights.h; not a YAML key)
+  bool learn_heights = true;        // calibration.lc.learn_heights: check the heights before a run
 };
 
 /// The model of a position solution (ECEF, ENU covariance at the fix) in the local frame n.

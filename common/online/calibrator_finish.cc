@@ -54,7 +54,9 @@ void Calibrator::finish() {
          weakDirections(*run_.latest, original_.initial_calibration, convergence_.held()))
       run_.warn(w);
   }
-  for (const std::string& w : rejectionShareWarnings(run_, positionsOnly())) run_.warn(w);
+  // In the LC scheme the GNSS rows are the positions, with or without raw GNSS beside them.
+  const bool position_rows = positionsOnly() || options_.loosely_coupled;
+  for (const std::string& w : rejectionShareWarnings(run_, position_rows)) run_.warn(w);
   warnAboutUnusedGnss();
   if (const long n = run_.counter(Counter::kNumericalFailures); n > 0) {
     run_.warn(std::to_string(n) +
@@ -63,7 +65,7 @@ void Calibrator::finish() {
               "calibration rests on the rest");
   }
   // `ok` means the run believes its answer; one whose estimate has left its data does not.
-  const std::string suspect = suspectReason(run_, positionsOnly(), options_.loosely_coupled);
+  const std::string suspect = suspectReason(run_, position_rows, options_.loosely_coupled);
   if (run_.status == "ok" && !suspect.empty()) run_.status = "suspect: " + suspect;
   if (!dataset_.odom_noise.measures_yaw_rate) {
     const CalibrationPrior& p = original_.initial_calibration;

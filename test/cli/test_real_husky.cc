@@ -3,12 +3,15 @@
 // No truth exists: the checks are what any sound calibration of this robot must show.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/math/rotation.h"
 #include "run_giocal.h"
 #include "temp_dir.h"
 
@@ -88,46 +91,52 @@ TEST(RealHusky, LooselyCoupledCalibrationAndDeadReckoningFromItsGnssFixes) {
   EXPECT_NEAR(summary(dir.file("cmp") + "/fgo")["final"]["s_v"].get<double>(), s_v[1], 1e-9);
 }
 
-// With its heights in (the default), the fixes' 30 m fall on flat ground pulls both estimators
-// and the gate then refuses most later fixes: the factor graph kept 52 of 901 and said nothing.
-// Now each run names the share it could not use and the key that leaves the height out.
-TEST(RealHusky, FixesTheGateRefusesAreNamedWithWhatToChange) {
+// With its heights believed, the fixes' 30 m fall on flat ground pulled both estimators and the
+// gate then refused most later fixes (the factor graph kept 126 of 901, its up axis 12 deg off
+// gravity). With defaults the run now checks the heights against the IMU's grade and the
+// odometer's distance first (7.2 m robust spread against a stated 1.6 m), weighs them by that,
+// and both estimators keep the vehicle's up axis and nearly all fixes.
+TEST(RealHusky, DefaultsWeighTheWanderingHeightsByWhatTheDriveShows) {
   test::TempDir dir;
   const std::string data = dir.file("husky"), pos = data + "/gnss.pos";
   std::string log;
   ASSERT_EQ(importHusky(data, &log), 0) << log;
+  // The vehicle's up axis in b as the guess has it: gravity over the drive (giocal import).
+  const Eigen::Vector3d up_guess =
+      rotationFromRpy(Eigen::Vector3d(-89.5377, -2.0803, 1.2396) * kDegToRad) *
+      Eigen::Vector3d::UnitZ();
   for (const std::string est : {"ekf", "fgo"}) {
     SCOPED_TRACE(est);
     const std::string out = dir.file(est);
     log.clear();
-    const int code = run("calibrate --data " + data + " --gnss lc --pos " + pos + " --estimator " +
-                             est + " --quiet --out " + out,
-                         &log);
+    ASSERT_EQ(run("calibrate --data " + data + " --gnss lc --pos " + pos + " --estimator " + est +
+                      " --quiet --out " + out,
+                  &log),
+              0)
+        << log;
     const nlohmann::json s = summary(out);
+    EXPECT_EQ(s["status"], "ok");
+    const nlohmann::json& h = s["lc_heights"];
+    ASSERT_TRUE(h["decided"].get<bool>()) << h.dump();
+    EXPECT_NEAR(h["spread_m"].get<double>(), 7.2, 0.3);
+    EXPECT_NEAR(h["reported_sigma_m"].get<double>(), 1.6, 1e-9);
+    EXPECT_NEAR(h["applied_scale"].get<double>(), 4.5, 0.2);
+    EXPECT_NE(log.find("their height sigmas x4.5"), std::string::npos) << log;
+    // Fewer than 20 % of the fixes unused (was 22 % EKF, 86 % factor graph).
     const long unused = s["counters"]["gnss_epochs_unused"].get<long>();
     const long used = s["gnss_epochs"].get<long>();
-    EXPECT_GT(unused, (unused + used) / 5);
-    // More than half unused: the run does not believe its answer, says so last, and exits 3.
-    const std::string status = s["status"].get<std::string>();
-    if (2 * unused > unused + used) {
-      EXPECT_EQ(code, 3) << log;
-      EXPECT_EQ(status.rfind("suspect: ", 0), 0u) << status;
-      const std::string last = log.substr(log.rfind("\n", log.size() - 2) + 1);
-      EXPECT_NE(last.find("status: suspect: "), std::string::npos) << last;
-    } else {
-      EXPECT_EQ(code, 0) << log;
-    }
-    bool named = false;
-    for (const auto& w : s["warnings"]) {
-      const std::string text = w.get<std::string>();
-      named |= text.find(std::to_string(unused) + " of " + std::to_string(unused + used) +
-                         " position fixes updated nothing") != std::string::npos &&
-               text.find("calibration.lc.use_height: 0") != std::string::npos;
-    }
-    EXPECT_TRUE(named) << s["warnings"].dump(1);
-    // Checked on the drive against its fixes (60 s outages at 5 windows): the factor graph's
-    // calibration dead-reckons better than the guess (mean 7.6 m against 57.2 m, 4 of 5 windows,
-    // 2026-11-27); the EKF's does not yet (66.1 m against 57.1 m): "Real logs decide" is open.
+    EXPECT_LT(unused, (unused + used) / 5) << unused << " of " << unused + used;
+    // The up axis within 5 deg of gravity's (was 12.9 deg for the factor graph).
+    const auto& rpy = s["final"]["rpy_b_m_deg"];
+    const Eigen::Vector3d up =
+        rotationFromRpy(
+            Eigen::Vector3d(rpy[0].get<double>(), rpy[1].get<double>(), rpy[2].get<double>()) *
+            kDegToRad) *
+        Eigen::Vector3d::UnitZ();
+    EXPECT_LT(std::acos(std::min(1.0, up.dot(up_guess))) * kRadToDeg, 5.0);
+    // Checked on the drive against its fixes (60 s outages at 5 windows), 2026-11-27: EKF 10.3 m
+    // against the guess's 8.1 m, factor graph 8.0 m against 8.0 m, both "no better". Validating
+    // better than the guess is open work ("Real logs decide"); no worse than this is asserted.
     log.clear();
     ASSERT_EQ(run("validate --data " + data + " --gnss lc --pos " + pos + " --run " + out +
                       " --quiet --out " + dir.file(est + "_validate"),
@@ -136,11 +145,27 @@ TEST(RealHusky, FixesTheGateRefusesAreNamedWithWhatToChange) {
         << log;
     const nlohmann::json v = summary(dir.file(est + "_validate"));
     EXPECT_EQ(v["windows"].size(), 5u);
-    if (est == "fgo") {
-      EXPECT_EQ(v["verdict"], "better") << log;
-      EXPECT_LT(v["ratio"].get<double>(), 0.5) << log;
-    }
+    EXPECT_NE(v["verdict"], "worse") << log;
+    EXPECT_LT(v["ratio"].get<double>(), est == "ekf" ? 1.35 : 1.1) << log;
+    EXPECT_LT(v["guess"].get<double>(), 10.0) << log;  // the aided stretches no longer tilt
   }
+}
+
+// Left out by hand, the heights are not checked: the user's choice is the run's.
+TEST(RealHusky, HeightsLeftOutByHandAreNotChecked) {
+  test::TempDir dir;
+  const std::string data = dir.file("husky"), pos = data + "/gnss.pos";
+  std::string log;
+  ASSERT_EQ(importHusky(data, &log), 0) << log;
+  const std::string config = dir.file("lc.yaml");
+  std::ofstream(config) << "calibration:\n  lc:\n    use_height: 0\n";
+  ASSERT_EQ(run("calibrate --data " + data + " --gnss lc --pos " + pos + " --config " + config +
+                    " --quiet --out " + dir.file("ekf"),
+                &log),
+            0)
+      << log;
+  EXPECT_FALSE(summary(dir.file("ekf")).contains("lc_heights"));
+  EXPECT_EQ(log.find("height sigmas"), std::string::npos) << log;
 }
 
 // The odometer's delay as a calibration state on a real log it does not fit: the Husky's wheel

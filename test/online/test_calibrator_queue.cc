@@ -73,7 +73,9 @@ TEST(CalibratorQueue, OneThreadPerSensorCalibratesAsTheOrderedReplay) {
     while (!done) {
       const CalibratorHealth h = queue.health();
       const auto c = queue.calibration();
-      if (c) EXPECT_TRUE(c->cov.allFinite());
+      if (c) {
+        EXPECT_TRUE(c->cov.allFinite());
+      }
       reads += h.t_data >= 0.0;
     }
   });
