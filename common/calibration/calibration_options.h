@@ -78,9 +78,10 @@ struct CalibrationOptions {
   // rate both see), is known to better than `apply_odometer_delay_sigma` and larger than
   // `apply_odometer_delay_min`, `calibrate` and `compare` take it out of the odometer's stamps
   // (summary.json's odometer_delay.applied_s). Off by default (sigma 0): on the real Husky bag
-  // (392 +- 10 ms late) it turned the EKF's validation from worse to no better than the guess but
-  // moved its roll 5.6 deg off gravity with lc.use_height: 0, and the factor graph's validation
-  // ratio from 0.13 to 0.18 (docs/results.md). Not with estimate_odometer_delay.
+  // (392 +- 10 ms late) with the default LC heights (lc.learn_heights) it moved the EKF's
+  // validation from 10.3 m to 7.9 m (the guess 8.1 m) and the factor graph's from 8.0 to 8.2 m,
+  // but with lc.use_height: 0 it turned the EKF's roll 5.6 deg off gravity (docs/results.md).
+  // Not with estimate_odometer_delay.
   double apply_odometer_delay_sigma = 0.0;  // [s]; e.g. 0.010
   double apply_odometer_delay_min = 0.020;  // [s]
   // Estimate the gyro triad's tilt against the accelerometer triad (GyroTilt, two angles) as a
