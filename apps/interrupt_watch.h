@@ -11,13 +11,16 @@ namespace giocal {
 
 class InterruptWatch {
  public:
-  /// Blocks SIGINT and SIGTERM in this thread (and so in every thread started after it) and waits
-  /// for them in a thread of its own. Construct it before any other thread starts.
+  /// Installs the handlers of SIGINT and SIGTERM (one watch per process); the destructor puts the
+  /// default actions back.
   InterruptWatch();
+  ~InterruptWatch();
+  InterruptWatch(const InterruptWatch&) = delete;
+  InterruptWatch& operator=(const InterruptWatch&) = delete;
   const StopRequest* stop() const { return stop_.get(); }
 
  private:
-  std::shared_ptr<StopRequest> stop_ = std::make_shared<StopRequest>();  // shared with the thread
+  std::unique_ptr<StopRequest> stop_ = std::make_unique<StopRequest>();
 };
 
 }  // namespace giocal

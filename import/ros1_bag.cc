@@ -71,11 +71,4 @@ std::unique_ptr<BagSource> openRos1Bag(const std::string& path) {
   return std::make_unique<Ros1Bag>(path);
 }
 
-std::unique_ptr<BagSource> openBag(const std::string& path) {
-  if (std::filesystem::is_directory(path) || std::filesystem::path(path).extension() == ".db3") {
-    return openRos2Bag(path);
-  }
-  return openRos1Bag(path);
-}
-
 }  // namespace giocal::import
