@@ -7,21 +7,9 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/setup.sh" > /dev/null  # the packages and the x86 build
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
-packages=(crossbuild-essential-arm64 qemu-user bc libyaml-cpp0.7:arm64
-  libboost-program-options-dev:arm64 libboost-filesystem-dev:arm64 libsqlite3-dev:arm64
-  libgtest-dev:arm64)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-  echo "giocal: installing ${missing[*]}"
-  dpkg --print-foreign-architectures | grep -qx arm64 || $SUDO dpkg --add-architecture arm64
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" > /dev/null
-fi
+bash "$root/scripts/install_missing.sh" crossbuild-essential-arm64 qemu-user bc \
+  libyaml-cpp0.7:arm64 libboost-program-options-dev:arm64 libboost-filesystem-dev:arm64 \
+  libsqlite3-dev:arm64 libgtest-dev:arm64
 arm="$root/build-aarch64"
 # libyaml-cpp-dev is not multi-arch: its arm64 package would remove the x86 one. Its files are
 # unpacked beside the build instead (the library itself, libyaml-cpp0.7:arm64, is installed).

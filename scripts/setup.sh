@@ -8,16 +8,6 @@ packages=(cmake g++ make libeigen3-dev libceres-dev libsuitesparse-dev libboost-
 # Packages only the tests need (scripts/test.sh: chromium, which renders the report's page).
 read -r -a extra <<< "${GIOCAL_EXTRA_PACKAGES:-}"
 packages+=("${extra[@]}")
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-  echo "giocal: installing ${missing[*]}"
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
+bash "$root/scripts/install_missing.sh" "${packages[@]}"
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$root/build" -j "$(nproc)"
