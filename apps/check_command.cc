@@ -1,7 +1,6 @@
 #include "apps/check_command.h"
 
 #include <algorithm>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <map>
