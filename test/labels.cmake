@@ -26,6 +26,10 @@ set(GIOCAL_SLOW_TESTS
   LooselyCoupled.BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm
 )
 set(GIOCAL_REAL_TESTS
+  Tdcp.TheRowsGradientsAreTheNumericOnes
+  Tdcp.ADisplacementThroughAClockStepASlipAndAHalfCycleIsRecovered
+  Tdcp.StaticRoversOfTheRealPairsStayPutAsSingleReceivers
+  TdcpWalk.DisplacementsPerEpochAgreeWithRtklibsFixedSolution
   Rtk.MixedReceivers5kmFixesEveryEpoch
   BagImport.GnssCommMessagesRoundTripARealReceiversObservations
   BagImport.RealHuskyAndJackalBags

@@ -97,6 +97,13 @@ std::optional<SatelliteAtReception> BroadcastOrbits::atReception(
     const SatId& sat, double t_rx, double range, char band, const Eigen::Vector3d& rx_e) const {
   const Ephemeris* eph = select(sat, t_rx);
   if (!eph) return std::nullopt;
+  return atReception(*eph, t_rx, range, band, rx_e);
+}
+
+SatelliteAtReception BroadcastOrbits::atReception(const Ephemeris& eph_ref, double t_rx,
+                                                  double range, char band,
+                                                  const Eigen::Vector3d& rx_e) {
+  const Ephemeris* eph = &eph_ref;
   // Transmission time in GPS time: the tag minus the pseudo-range is the satellite clock's
   // transmission time (both carry the receiver clock error), corrected by the satellite clock.
   double t_tx = t_rx - range / kSpeedOfLight;

@@ -35,6 +35,9 @@ class BroadcastOrbits {
   /// is wrong by the receiver clock error). Empty when no ephemeris applies.
   std::optional<SatelliteAtReception> atReception(const SatId& sat, double t_rx, double range,
                                                   char band, const Eigen::Vector3d& rx_e) const;
+  /// The same with a chosen ephemeris (a time-differenced pair computes both epochs with one).
+  static SatelliteAtReception atReception(const Ephemeris& eph, double t_rx, double range,
+                                          char band, const Eigen::Vector3d& rx_e);
 
   const NavData& nav() const { return nav_; }
   /// A navigation message received later (online); one already held (same satellite and toe) is

@@ -22,6 +22,13 @@ bool combinations(GnssSystem sys, const SignalObs* a, const SignalObs* b, double
   return true;
 }
 
+double medianOf(const std::vector<std::pair<std::pair<SatId, char>, double>>& values) {
+  std::vector<double> v;
+  v.reserve(values.size());
+  for (const auto& m : values) v.push_back(m.second);
+  return median(v);
+}
+
 }  // namespace
 
 void CycleSlipDetector::update(const ObsEpoch& epoch) {
@@ -29,6 +36,11 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
   // Doppler check: the phase change against the Doppler prediction, with the part common to all
   // satellites (receiver clock jumps) removed by the median.
   std::vector<std::pair<Key, double>> doppler_misfit;
+  // Melbourne-Wuebbena jumps, tested after the part common to all satellites is removed: a
+  // receiver that steps the clock of its code alone (by a millisecond) moves every one alike.
+  // In metres: the common part is the same for every wide-lane wavelength.
+  std::vector<std::pair<Key, double>> mw_jumps;
+  std::vector<double> mw_widelanes;
   next_.clear();
   for (const SatObs& so : epoch.sats) {
     const SignalObs* prim = so.bestOnBand(primaryBand(so.sat.sys));
@@ -85,9 +97,12 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
         // by as many wide-lane cycles. When the phase alone passes both the geometry-free and the
         // Doppler test, its jump is the code's, not a slip (the code outlier check deals with
         // it); it decides only where one of those tests is missing.
-        if (tr.has_mw && p.has_mw && std::abs(mw - p.mw) > options_.mw_threshold &&
-            !(gf_tested && doppler_tested)) {
-          slip = true;
+        if (tr.has_mw && p.has_mw && !(gf_tested && doppler_tested)) {
+          // Signed: a pair taken in either order then moves by the same metres.
+          const double lw = kSpeedOfLight / (carrierFrequency(so.sat.sys, s->band) -
+                                             carrierFrequency(so.sat.sys, other->band));
+          mw_jumps.push_back({key, (mw - p.mw) * lw});
+          mw_widelanes.push_back(lw);
         }
       }
       slip_.push_back({key, slip});
@@ -95,10 +110,14 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
     }
   }
   std::sort(slip_.begin(), slip_.end(), ByKey());
+  const double mw_common = mw_jumps.size() >= 3 ? medianOf(mw_jumps) : 0.0;
+  for (size_t k = 0; k < mw_jumps.size(); ++k) {
+    if (std::abs(mw_jumps[k].second - mw_common) >
+        options_.mw_threshold * std::abs(mw_widelanes[k]))
+      findKey(slip_, mw_jumps[k].first)->second = true;
+  }
   if (doppler_misfit.size() >= 3) {
-    std::vector<double> v;
-    for (const auto& m : doppler_misfit) v.push_back(m.second);
-    const double common = median(v);
+    const double common = medianOf(doppler_misfit);
     for (const auto& m : doppler_misfit) {
       if (std::abs(m.second - common) > options_.doppler_threshold) {
         findKey(slip_, m.first)->second = true;

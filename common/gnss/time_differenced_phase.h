@@ -1,0 +1,101 @@
+// Time-differenced carrier phase (TDCP) of one receiver: each satellite's phase change between
+// two consecutive epochs, with the satellite seen at both (one ephemeris for the pair), and the
+// differences between satellites of one system and band that cancel the receiver clock's change.
+// Needs no base station and no integer ambiguity: the ambiguity cancels while the phase is locked.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/cycle_slip.h"
+#include "common/gnss/dd_epoch.h"
+#include "common/gnss/observation.h"
+#include "common/gnss/weighting.h"
+
+namespace giocal {
+
+struct TdcpOptions {
+  double elevation_mask_deg = 15.0;
+  int frequencies = 2;  // bands per system, as ddBands()
+  std::vector<GnssSystem> systems = defaultGnssSystems();
+  // One epoch's phase noise [m]; a time difference has twice its variance. Multipath changes
+  // little between epochs a second apart, so this is the thermal noise plus a margin.
+  ElevationNoise phase{0.003};
+  double max_interval_s = 1.5;  // a longer step between epochs starts again
+  CycleSlipOptions slips;
+};
+
+/// One satellite's phase on one band at the pair's two epochs.
+struct TdcpSignal {
+  SatId sat;
+  char band = '1';
+  double lambda = 0.0;                               // [m]
+  Eigen::Vector3d sat0_e = Eigen::Vector3d::Zero();  // at the first epoch (Sagnac to its reception)
+  Eigen::Vector3d sat1_e = Eigen::Vector3d::Zero();  // at the second epoch
+  double sat_clock_change_m = 0.0;                   // c (dts1 - dts0)
+  double tropo_change_m = 0.0;                       // modelled troposphere, second minus first
+  double phase_change_m = 0.0;                       // lambda (L1 - L0)
+  double variance = 0.0;                             // of phase_change_m [m^2]
+  double el = 0.0;                                   // at the second epoch [rad]
+};
+
+/// One observation: signal minus the reference of its system and band (indices into signals).
+struct TdcpRow {
+  int signal = -1;
+  int ref = -1;
+};
+
+/// Signals left out of a pair, by reason.
+struct TdcpCounts {
+  long long slipped = 0;     // loss of lock, geometry-free, Melbourne-Wuebbena or Doppler test
+  long long half_cycle = 0;  // half-cycle ambiguity not resolved at either epoch (LLI bit 1)
+  long long low = 0;         // below the elevation mask
+  long long no_orbit = 0;    // no ephemeris
+  long long alone = 0;       // the only signal of its system and band: nothing to difference
+  long long ephemeris_changes = 0;  // kept: both epochs computed with the second's ephemeris
+  long long gaps = 0;               // epoch steps longer than max_interval_s (no pair formed)
+  long long clock_jumps = 0;        // receiver clock steps seen in the code (cancelled by rows)
+  void add(const TdcpCounts& o);
+};
+
+struct TdcpPair {
+  double t0 = 0.0, t1 = 0.0;
+  std::vector<TdcpSignal> signals;
+  std::vector<TdcpRow> rows;
+  TdcpCounts left_out;
+  std::vector<SatId> slipped;  // satellites with a slipped band in this pair, named once each
+};
+
+/// The observed value of a row [m]: phase change of the signal minus that of the reference.
+double tdcpObserved(const TdcpPair& pair, const TdcpRow& row);
+/// The predicted value of a row [m] for antenna positions p0_e, p1_e (ECEF) at the two epochs,
+/// with its gradients with respect to them. The receiver clock's change is not in it (it cancels).
+double tdcpPredict(const TdcpPair& pair, const TdcpRow& row, const Eigen::Vector3d& p0_e,
+                   const Eigen::Vector3d& p1_e, Eigen::RowVector3d* d_p0, Eigen::RowVector3d* d_p1);
+/// Covariance of the rows: each row's own variance plus its reference's, shared by the rows
+/// with that reference.
+Eigen::MatrixXd tdcpCovariance(const TdcpPair& pair);
+
+/// Forms the pair of each epoch with the one before it.
+class TdcpBuilder {
+ public:
+  TdcpBuilder(const BroadcastOrbits& orbits, const TdcpOptions& options = {});
+  /// The pair of `epoch` with the previous epoch (no rows for the first epoch and after a gap).
+  /// rover_e: the antenna's approximate ECEF position at `epoch` (metres are enough: an error of
+  /// 10 m changes a row by about 1 mm over one second).
+  TdcpPair add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e);
+  const TdcpCounts& totals() const { return totals_; }
+
+ private:
+  const BroadcastOrbits& orbits_;
+  TdcpOptions options_;
+  CycleSlipDetector slips_;
+  ObsEpoch previous_;
+  Eigen::Vector3d previous_e_ = Eigen::Vector3d::Zero();
+  bool has_previous_ = false;
+  TdcpCounts totals_;
+};
+
+}  // namespace giocal
