@@ -11,6 +11,7 @@
 #include "common/math/whitening.h"
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/dd_gnss_model.h"
+#include "common/models/tdcp_model.h"
 #include "common/models/doppler_model.h"
 #include "common/models/heading_change_model.h"
 #include "common/models/imu_preintegration_model.h"
@@ -105,10 +106,26 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
     o.variance = 0.09;
     dop.push_back(o);
   }
+  // Time-differenced phase: the same satellites a second later, 3.9 km along their orbits.
+  TdcpPair pair;
+  for (size_t k = 0; k < geo.size(); ++k) {
+    TdcpSignal g;
+    g.sat = geo[k].sat;
+    g.lambda = 0.19;
+    g.sat0_e = geo[k].sat_at_rover_e;
+    g.sat1_e = g.sat0_e + 3900.0 * Eigen::Vector3d(0.3, -0.8, 0.5).normalized();
+    g.sat_clock_change_m = 0.001 * static_cast<double>(k);
+    g.phase_change_m = 300.0 * static_cast<double>(k);
+    g.variance = 2e-5 * static_cast<double>(k + 1);
+    g.el = geo[k].el;
+    pair.signals.push_back(g);
+    if (k > 0) pair.rows.push_back({static_cast<int>(k), 0});
+  }
   const auto n = [](int prn) { return ambiguityKey(SatId{GnssSystem::kGps, prn}, '1'); };
   const std::vector<DdAmbiguityFix> fixes{{n(3), n(5), 12.0}, {n(4), n(5), -3.0}};
   return {std::make_shared<DdGnssModel>(frame, geo, dd, var),
           std::make_shared<DopplerModel>(frame.R_e_n(), Vec3(0.1, -0.2, 0.5), dop),
+          std::make_shared<TdcpModel>(frame, pair),
           std::make_shared<HeadingChangeModel>(0.001),
           std::make_shared<AmbiguityFixModel>(fixes, 1e-3),
           std::make_shared<ZuptModel>(0.01),
@@ -126,7 +143,7 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
 
 TEST(MeasurementModels, EveryJacobianMatchesNumericDifferentiation) {
   for (const auto& model : allModels()) {
-    const bool gnss = model->name() == "dd_gnss";
+    const bool gnss = model->name() == "dd_gnss" || model->name() == "tdcp";
     for (int trial = 0; trial < 10; ++trial) {
       test::expectJacobiansMatchNumeric(*model, randomValues(*model), gnss ? 1e-5 : 1e-6,
                                         gnss ? 1e-3 : 1e-6);
@@ -315,8 +332,8 @@ TEST(MeasurementModels, CeresCostIsTheWhitenedModelWithTangentJacobians) {
         cost.Evaluate(test::pointers(v).data(), out.data(), nullptr);
         return out;
       };
-      const bool gnss =
-          model->name() == "dd_gnss";  // large ranges: see expectJacobiansMatchNumeric
+      // Large ranges: see expectJacobiansMatchNumeric.
+      const bool gnss = model->name() == "dd_gnss" || model->name() == "tdcp";
       EXPECT_LT(test::relativeDifference(
                     tangent, test::numericJacobian(f, b.tangentSize(), gnss ? 1e-3 : 1e-6)),
                 gnss ? 1e-5 : 1e-6)
