@@ -44,6 +44,7 @@ void TdcpCounts::add(const TdcpCounts& o) {
   ephemeris_changes += o.ephemeris_changes;
   gaps += o.gaps;
   clock_jumps += o.clock_jumps;
+  screened += o.screened;
 }
 
 double tdcpObserved(const TdcpPair& pair, const TdcpRow& row) {
@@ -79,6 +80,69 @@ Eigen::MatrixXd tdcpCovariance(const TdcpPair& pair) {
     }
   }
   return C;
+}
+
+int formRows(TdcpPair& pair) {
+  pair.rows.clear();
+  // Reference per system and band: the highest signal. Rows difference every other against it.
+  std::map<std::pair<GnssSystem, char>, int> refs;
+  for (size_t i = 0; i < pair.signals.size(); ++i) {
+    const TdcpSignal& g = pair.signals[i];
+    const auto key = std::make_pair(g.sat.sys, g.band);
+    const auto it = refs.find(key);
+    if (it == refs.end() || pair.signals[static_cast<size_t>(it->second)].el < g.el)
+      refs[key] = static_cast<int>(i);
+  }
+  for (size_t i = 0; i < pair.signals.size(); ++i) {
+    const TdcpSignal& g = pair.signals[i];
+    const int ref = refs.at({g.sat.sys, g.band});
+    if (ref != static_cast<int>(i)) pair.rows.push_back({static_cast<int>(i), ref});
+  }
+  int groups_alone = 0;
+  for (const auto& [key, ref] : refs) {
+    const bool alone = std::none_of(pair.rows.begin(), pair.rows.end(),
+                                    [&](const TdcpRow& r) { return r.ref == ref; });
+    if (alone) ++groups_alone;
+  }
+  return groups_alone;
+}
+
+int screenTdcp(TdcpPair& pair, const Eigen::Vector3d& p0_e, const Eigen::Vector3d& p1_e,
+               double predicted_sigma_m, double gate) {
+  // Each signal's phase change less the predicted range change: the receiver clock's change
+  // (per system and band) plus noise, and a slip or multipath jump where one is.
+  std::map<std::pair<GnssSystem, char>, std::vector<double>> by_clock;
+  std::vector<double> misfit(pair.signals.size());
+  for (size_t i = 0; i < pair.signals.size(); ++i) {
+    const TdcpSignal& s = pair.signals[i];
+    misfit[i] = s.phase_change_m - ((s.sat1_e - p1_e).norm() - (s.sat0_e - p0_e).norm() -
+                                    s.sat_clock_change_m + s.tropo_change_m);
+    by_clock[{s.sat.sys, s.band}].push_back(misfit[i]);
+  }
+  std::map<std::pair<GnssSystem, char>, double> clock;
+  for (auto& [key, values] : by_clock) {
+    if (values.size() < 3) continue;  // two cannot tell which one is wrong
+    auto mid = values.begin() + static_cast<long>(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    clock[key] = *mid;
+  }
+  std::vector<TdcpSignal> kept;
+  for (size_t i = 0; i < pair.signals.size(); ++i) {
+    const TdcpSignal& s = pair.signals[i];
+    const auto it = clock.find({s.sat.sys, s.band});
+    const double sigma = std::sqrt(s.variance + predicted_sigma_m * predicted_sigma_m);
+    if (it != clock.end() && std::abs(misfit[i] - it->second) > gate * sigma) {
+      ++pair.left_out.screened;
+      continue;
+    }
+    kept.push_back(s);
+  }
+  const int dropped = static_cast<int>(pair.signals.size() - kept.size());
+  if (dropped > 0) {
+    pair.signals = std::move(kept);
+    formRows(pair);
+  }
+  return dropped;
 }
 
 TdcpBuilder::TdcpBuilder(const BroadcastOrbits& orbits, const TdcpOptions& options)
@@ -158,25 +222,7 @@ TdcpPair TdcpBuilder::add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e)
     std::nth_element(code_minus_phase.begin(), mid, code_minus_phase.end());
     if (std::abs(*mid) > kClockJump_m) ++out.left_out.clock_jumps;
   }
-  // Reference per system and band: the highest signal. Rows difference every other against it.
-  std::map<std::pair<GnssSystem, char>, int> refs;
-  for (size_t i = 0; i < out.signals.size(); ++i) {
-    const TdcpSignal& g = out.signals[i];
-    const auto key = std::make_pair(g.sat.sys, g.band);
-    const auto it = refs.find(key);
-    if (it == refs.end() || out.signals[static_cast<size_t>(it->second)].el < g.el)
-      refs[key] = static_cast<int>(i);
-  }
-  for (size_t i = 0; i < out.signals.size(); ++i) {
-    const TdcpSignal& g = out.signals[i];
-    const int ref = refs.at({g.sat.sys, g.band});
-    if (ref != static_cast<int>(i)) out.rows.push_back({static_cast<int>(i), ref});
-  }
-  for (const auto& [key, ref] : refs) {
-    const bool alone = std::none_of(out.rows.begin(), out.rows.end(),
-                                    [&](const TdcpRow& r) { return r.ref == ref; });
-    if (alone) ++out.left_out.alone;
-  }
+  out.left_out.alone += formRows(out);
   totals_.add(out.left_out);
   previous_ = epoch;
   previous_e_ = rover_e;

@@ -57,6 +57,7 @@ struct TdcpCounts {
   long long ephemeris_changes = 0;  // kept: both epochs computed with the second's ephemeris
   long long gaps = 0;               // epoch steps longer than max_interval_s (no pair formed)
   long long clock_jumps = 0;        // receiver clock steps seen in the code (cancelled by rows)
+  long long screened = 0;           // disagreed with the displacement the IMU and odometer predict
   void add(const TdcpCounts& o);
 };
 
@@ -77,6 +78,19 @@ double tdcpPredict(const TdcpPair& pair, const TdcpRow& row, const Eigen::Vector
 /// Covariance of the rows: each row's own variance plus its reference's, shared by the rows
 /// with that reference.
 Eigen::MatrixXd tdcpCovariance(const TdcpPair& pair);
+
+/// (Re)forms a pair's rows from its signals: a reference per system and band (the highest),
+/// the others differenced against it. Returns the number of groups with a single signal.
+int formRows(TdcpPair& pair);
+
+/// Leaves out the signals whose phase change disagrees with the range change the antenna
+/// positions p0_e, p1_e (an estimator's prediction, with `predicted_sigma_m` the uncertainty of
+/// its displacement) give, after the clock change common to the signal's system and band (their
+/// median) is taken out: more than `gate` times the combined sigma. Re-forms the rows; returns
+/// the number left out (counted in left_out.screened). A slip the loss-of-lock flag and the
+/// combinations missed is caught here, in this pair only.
+int screenTdcp(TdcpPair& pair, const Eigen::Vector3d& p0_e, const Eigen::Vector3d& p1_e,
+               double predicted_sigma_m, double gate);
 
 /// Forms the pair of each epoch with the one before it.
 class TdcpBuilder {

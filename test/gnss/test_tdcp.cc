@@ -135,6 +135,25 @@ TEST(Tdcp, ADisplacementThroughAClockStepASlipAndAHalfCycleIsRecovered) {
   for (const TdcpRow& row : pair.rows)
     EXPECT_NEAR(tdcpPredict(pair, row, p0, p0 + d, nullptr, nullptr), tdcpObserved(pair, row),
                 2e-4);
+  // A 12 cm phase jump on both bands of one satellite (multipath, or a slip of whole metres no
+  // combination sees) passes the slip tests; the predicted displacement finds it.
+  ObsEpoch jumped = e1;
+  for (SignalObs& g : jumped.sats[3].signals)
+    g.L += 0.12 / (kSpeedOfLight / carrierFrequency(jumped.sats[3].sat.sys, g.band));
+  TdcpBuilder again(orbits);
+  again.add(e0, p0 + spp_error);
+  TdcpPair screened = again.add(jumped, p0 + d + spp_error);
+  EXPECT_EQ(screened.left_out.slipped, 1);  // the loss-of-lock flag only
+  const size_t signals = screened.signals.size();
+  // Predicted by dead reckoning 2 cm off, with that sigma.
+  const Eigen::Vector3d predicted = p0 + d + Eigen::Vector3d(0.02, 0.0, 0.0);
+  EXPECT_EQ(screenTdcp(screened, p0, predicted, 0.02, 4.0), 2);
+  EXPECT_EQ(screened.left_out.screened, 2);
+  EXPECT_EQ(screened.signals.size(), signals - 2);
+  for (const TdcpSignal& g : screened.signals) EXPECT_NE(g.sat, jumped.sats[3].sat);
+  for (const TdcpRow& row : screened.rows)
+    EXPECT_NEAR(tdcpPredict(screened, row, p0, p0 + d, nullptr, nullptr),
+                tdcpObserved(screened, row), 2e-4);
   // A step longer than the pairing interval forms no pair, and says so.
   TdcpBuilder gapped(orbits);
   gapped.add(e0, p0);
