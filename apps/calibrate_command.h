@@ -14,6 +14,7 @@ struct CalibrateJob {
   bool overwrite = false;
   bool quiet = false;     // no progress line
   std::string positions;  // --gnss lc --pos <file.pos>: the LC scheme
+  bool single = false;    // --gnss single (also taken when dataset.yaml names no base)
   std::string prior;      // --prior <summary.json>: start from an earlier drive's calibration
   const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };

@@ -37,7 +37,7 @@ const char* kUsage =
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
-    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--gnss tc|lc --pos <file.pos>]\n"
+    "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--gnss tc|single|lc --pos <file.pos>]\n"
     "                   [--config <yaml>] --out <dir> [--overwrite] [--quiet]\n"
     "  giocal compare   --data <dir> [--gnss tc|lc --pos <file.pos>] [--config <yaml>] [--out "
     "<dir>]\n"
@@ -141,19 +141,28 @@ int runRtkCommand(int argc, char** argv) {
 
 void addGnssOptions(po::options_description& opts) {
   opts.add_options()("gnss", po::value<std::string>()->default_value("tc"),
-                     "tc: double differences (tightly coupled); lc: position solutions (--pos)")(
+                     "tc: double differences (tightly coupled); lc: position solutions (--pos); single: one "
+                     "receiver, no base (time-differenced phase, Doppler, single point positions)")(
       "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
 }
 
-/// The LC scheme's .pos file, empty for the TC scheme.
-std::string lcPositions(const po::variables_map& vm) {
+/// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Only calibrate
+/// takes --gnss single so far.
+std::string lcPositions(const po::variables_map& vm, bool single_allowed = false) {
   const std::string gnss = vm["gnss"].as<std::string>();
-  if (gnss != "tc" && gnss != "lc") throw po::error("--gnss must be tc or lc, not '" + gnss + "'");
+  if (gnss == "single" && !single_allowed)
+    throw po::error("--gnss single: only giocal calibrate --estimator ekf has the single-receiver "
+                    "scheme so far");
+  if (gnss != "tc" && gnss != "lc" && gnss != "single")
+    throw po::error("--gnss must be tc, lc or single, not '" + gnss + "'");
   if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
     throw po::error("--gnss lc needs --pos <file.pos>, and --pos only goes with --gnss lc");
   }
   return vm["pos"].as<std::string>();
 }
+
+/// --gnss single: one receiver, no base.
+bool singleReceiver(const po::variables_map& vm) { return vm["gnss"].as<std::string>() == "single"; }
 
 int runCalibrateCommand(int argc, char** argv) {
   po::options_description opts("giocal calibrate");
@@ -172,7 +181,8 @@ int runCalibrateCommand(int argc, char** argv) {
   job.data = vm["data"].as<std::string>();
   job.estimator = vm["estimator"].as<std::string>();
   job.prior = vm["prior"].as<std::string>();
-  job.positions = lcPositions(vm);
+  job.positions = lcPositions(vm, true);
+  job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();

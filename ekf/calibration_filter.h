@@ -24,10 +24,12 @@
 namespace giocal {
 
 /// The filter's stochastic clones: the attitude when the robot stopped, the pose at the start of
-/// the odometer interval.
+/// the odometer interval, the pose at the previous GNSS epoch.
 inline const StateKey kHeadingClone = at(state::kQ, Copy::kStill);
 inline const StateKey kOdoP = at(state::kP, Copy::kOdo);
 inline const StateKey kOdoQ = at(state::kQ, Copy::kOdo);
+inline const StateKey kGnssP = at(state::kP, Copy::kGnss);  // the pose at the previous GNSS
+inline const StateKey kGnssQ = at(state::kQ, Copy::kGnss);  // epoch (single receiver's TDCP)
 
 /// What one odometer sample did to the filter.
 struct OdometerStep {

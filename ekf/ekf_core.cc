@@ -25,6 +25,7 @@ EkfCore::EkfCore(const CalibrationOptions& options, const CalibrationInputs& sen
       sensors_(sensors),
       filter_(options, sensors.description, sensors.imu, init),
       gnss_(orbits, sensors.base_e, options),
+      single_(orbits, options),
       next_output_(init.x.t) {}
 
 void EkfCore::odometer(const OdomSample& sample, CalibrationRun& run) {
@@ -60,7 +61,11 @@ EpochOutcome EkfCore::position(double t, CalibrationRun& run) {
 
 EpochOutcome EkfCore::gnss(const ObsEpoch& rover, const ObsEpoch& base, CalibrationRun& run) {
   if (options_.loosely_coupled) return position(rover.t, run);
-  const GnssEpochReport rep = gnss_.process(filter_, rover, base);
+  const GnssEpochReport rep = options_.single_receiver ? single_.process(filter_, rover)
+                                                       : gnss_.process(filter_, rover, base);
+  run.count(Counter::kTdcpRows, rep.tdcp_rows);
+  run.count(Counter::kTdcpSlips, rep.tdcp_slips);
+  run.count(Counter::kTdcpScreened, rep.tdcp_screened);
   run.count(Counter::kNumericalFailures, filter_.takeNumericalFailures());
   run.count(Counter::kDdRows, rep.dd_rows);
   run.count(Counter::kGnssRowsRejected, rep.rejected_rows);

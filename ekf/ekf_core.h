@@ -6,6 +6,7 @@
 #include "common/online/estimator_core.h"
 #include "ekf/calibration_filter.h"
 #include "ekf/gnss_update.h"
+#include "ekf/single_receiver_update.h"
 
 namespace giocal {
 
@@ -33,6 +34,7 @@ class EkfCore : public EstimatorCore {
   const CalibrationInputs& sensors_;
   CalibrationFilter filter_;
   GnssUpdate gnss_;
+  SingleReceiverUpdate single_;  // options.single_receiver: rover epochs without a base
   double next_output_;
 };
 

@@ -31,9 +31,10 @@ void CalibrationFilter::movePose(const Eigen::Vector3d& p_n_b, const Eigen::Vect
     const Quat q = quatFromWxyz(s_.value(key).data());
     quatToWxyz(Quat(dR * q.toRotationMatrix()).normalized(), s_.value(key).data());
   };
-  if (s_.has(kOdoP)) {
-    s_.value(kOdoP) = p_n_b + dR * (s_.value(kOdoP) - x.p_n_b);
-    rotate(kOdoQ);
+  for (const auto& [p, q] : {std::pair{kOdoP, kOdoQ}, std::pair{kGnssP, kGnssQ}}) {
+    if (!s_.has(p)) continue;
+    s_.value(p) = p_n_b + dR * (s_.value(p) - x.p_n_b);
+    rotate(q);
   }
   if (s_.has(kHeadingClone)) rotate(kHeadingClone);
   x.p_n_b = p_n_b;

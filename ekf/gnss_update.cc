@@ -14,6 +14,7 @@
 #include "common/models/ambiguity_fix_model.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/models/doppler_model.h"
+#include "ekf/doppler_update.h"
 #include "ekf/imu_propagation.h"
 
 namespace giocal {
@@ -170,7 +171,7 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     rep.dd_rows = static_cast<int>(rows.size());
   }
 
-  updateDoppler(f, rover, ant_e, ep.rover_satellites, dt, rep);
+  rep.rejected_rows += updateDoppler(f, orbits_, options_, rover, ant_e, ep.rover_satellites, dt);
 
   if (rep.used && options_.ambiguity_resolution) {
     std::vector<DdObservation> phase_rows;
@@ -180,48 +181,6 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     resolveAmbiguities(f, ep, phase_rows, rep);
   }
   return rep;
-}
-
-void GnssUpdate::updateDoppler(CalibrationFilter& f, const ObsEpoch& rover,
-                               const Eigen::Vector3d& ant_e,
-                               const std::vector<RoverSatellite>& known, double dt,
-                               GnssEpochReport& rep) {
-  std::vector<DopplerObservation> obs =
-      dopplerObservations(rover, orbits_, ant_e, options_.doppler, known);
-  if (obs.size() < 4) return;
-  StateRegistry& s = f.state();
-  const CalibrationFilter::Gyro gyro = f.gyroAt(rover.t);
-  const std::vector<StateKey> keys{state::kV, state::kQ, state::kBg, state::kPbg,
-                                   state::kClockDrift};
-  if (!s.has(state::kClockDrift) || dt > 30.0) {
-    // Start the clock drift from the median residual at zero drift.
-    if (s.has(state::kClockDrift)) s.remove(state::kClockDrift);
-    s.add(vectorBlock(state::kClockDrift, 1), Eigen::VectorXd::Zero(1),
-          Eigen::MatrixXd::Constant(1, 1, 1.0));
-    const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
-    const MeasurementRows lin = linearize(m, s.bind(keys), s.dim());
-    s.value(state::kClockDrift)[0] = -median(
-        std::vector<double>(lin.residual.data(), lin.residual.data() + lin.residual.size()));
-  } else {
-    const int i = s.offset(state::kClockDrift);
-    s.covariance()(i, i) += options_.clock_drift_noise * options_.clock_drift_noise * dt;
-  }
-  while (obs.size() >= 4) {
-    const DopplerModel m(f.frame().R_e_n(), gyro.rate, obs);
-    const Eigen::VectorXd z =
-        normalizedInnovations(s.covariance(), linearize(m, s.bind(keys), s.dim()));
-    long worst = 0;
-    if (z.maxCoeff(&worst) <= options_.innovation_gate) {
-      // A row per satellite, on 13 state columns (velocity, attitude, gyro bias, lever arm,
-      // clock drift): compressed to those, as the DD code rows.
-      std::vector<int> all(obs.size());
-      std::iota(all.begin(), all.end(), 0);
-      f.updateLinearized(compressRows(f.rows(m, keys, gyro.variance), all), INFINITY);
-      return;
-    }
-    obs.erase(obs.begin() + worst);
-    ++rep.rejected_rows;
-  }
 }
 
 void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,

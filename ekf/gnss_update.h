@@ -19,6 +19,7 @@ struct GnssEpochReport {
   bool diverged = false;  // DD code innovations far outside their covariance
   int dd_rows = 0, rejected_rows = 0, code_outliers = 0, ambiguity_resets = 0;
   int fixed_ambiguities = 0;
+  int tdcp_rows = 0, tdcp_slips = 0, tdcp_screened = 0;  // the single-receiver scheme
   double ratio = 0.0;
 };
 
@@ -31,8 +32,6 @@ class GnssUpdate {
 
  private:
   void resetAmbiguity(StateRegistry& s, const StateKey& key, double value, double lambda);
-  void updateDoppler(CalibrationFilter& f, const ObsEpoch& rover, const Eigen::Vector3d& ant_e,
-                     const std::vector<RoverSatellite>& known, double dt, GnssEpochReport& rep);
   void resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
                           const std::vector<DdObservation>& phase_rows, GnssEpochReport& rep);
 

@@ -9,6 +9,7 @@
 #include "common/calibration/dataset_diagnosis.h"
 #include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_obs.h"
+#include "common/gnss/spp.h"
 #include "common/io/data_error.h"
 #include "common/io/sensor_logs.h"
 #include "replay/estimator_factory.h"
@@ -84,6 +85,21 @@ Eigen::Vector3d basePosition(const DatasetDescription& d, const ObsHeader& base_
   return p;
 }
 
+// The single-receiver scheme's local origin: the rover's first single point position within its
+// first 100 epochs (the header's approximate position may be absent or kilometres off).
+Eigen::Vector3d roverStart(const std::string& rover_obs, const std::vector<NavData>& navs) {
+  const BroadcastOrbits orbits(mergeNav(navs));
+  RinexObsReader reader(rover_obs);
+  ObsEpoch e;
+  for (int k = 0; k < 100 && reader.next(e); ++k) {
+    const SppSolution spp = solveSpp(e, orbits, SppOptions{});
+    if (spp.valid) return spp.p_e;
+  }
+  throw DataError(rover_obs, 0,
+                  "no single point position in the first 100 epochs (do the navigation files "
+                  "cover the observations?)");
+}
+
 // The dataset's unusable conditions (dataset_diagnosis), its files read again (only after a
 // failed initialization).
 std::vector<std::string> diagnoseFolder(const DatasetDescription& d, double max_base_offset) {
@@ -108,7 +124,10 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   const DatasetDescription& d = data.description;
   // Without raw GNSS the LC scheme's solutions are the only GNSS (an imported bag's gnss.pos).
   const bool raw = !d.rover_obs.empty() || job.positions.empty();
-  if (raw) requireRawGnss(d);
+  const bool single = job.options.single_receiver;  // rover only, no base
+  if (single && d.rover_obs.empty())
+    throw DataError(d.pathOf("dataset.yaml"), 0, "--gnss single needs files.rover_obs");
+  if (raw && !single) requireRawGnss(d);
   auto need = [&](const std::string& name) {
     const std::string p = d.pathOf(name);
     if (!std::filesystem::exists(p)) throw DataError(p, 0, "file missing");
@@ -119,7 +138,7 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   std::shared_ptr<RinexObsReader> rover, base;
   if (raw) {
     rover = std::make_shared<RinexObsReader>(need(d.rover_obs));
-    base = std::make_shared<RinexObsReader>(need(d.base_obs));
+    if (!single) base = std::make_shared<RinexObsReader>(need(d.base_obs));
   }
   std::vector<PositionFix> positions;  // a solution file is small: read whole
   std::vector<std::string> pos_warnings;
@@ -130,7 +149,9 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   std::vector<NavData> navs;
   for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
   // The local frame's origin: the base, else the first solution.
-  const Eigen::Vector3d origin_e = raw ? basePosition(d, base->header()) : positions.front().p_e;
+  const Eigen::Vector3d origin_e = single ? roverStart(need(d.rover_obs), navs)
+                                   : raw    ? basePosition(d, base->header())
+                                            : positions.front().p_e;
   std::unique_ptr<Calibrator> cal =
       makeCalibrator(job.estimator, d, origin_e, job.options, job.fgo_options, sink);
   if (!navs.empty()) cal->addNavigation(mergeNav(navs));
@@ -143,8 +164,10 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   if (raw) {
     streams.push_back(
         readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
-    streams.push_back(
-        readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
+    if (base) {
+      streams.push_back(readerStream<RinexObsReader, ObsEpoch>(
+          base, [&c](const ObsEpoch& e) { c.addBase(e); }));
+    }
   }
   if (!positions.empty()) {
     streams.push_back(vectorStream<PositionFix>(
@@ -154,13 +177,14 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   if (streams[0].count < 2) throw DataError(d.pathOf(d.imu), 0, "fewer than two IMU samples");
   if (streams[1].count == 0) throw DataError(d.pathOf(d.odom), 0, "no odometer samples");
   if (raw && streams[2].count == 0) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
-  if (raw && streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
+  if (base && streams[3].count == 0) throw DataError(d.pathOf(d.base_obs), 0, "no epochs");
   try {
     c.finish();
   } catch (const std::runtime_error& e) {
     // A failed initialization says which condition of the data it met, when one is found.
     const std::vector<std::string> why =
-        raw ? diagnoseFolder(d, job.options.max_base_offset) : std::vector<std::string>{};
+        raw && !single ? diagnoseFolder(d, job.options.max_base_offset)
+                       : std::vector<std::string>{};
     if (why.empty()) throw;
     std::string text = std::string(e.what()) + "; the dataset:";
     for (const std::string& w : why) text += " " + w + ";";
@@ -173,7 +197,7 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   std::vector<std::vector<std::string>> more{odom->warnings()};
   if (raw) {
     more.push_back(rover->warnings());
-    more.push_back(base->warnings());
+    if (base) more.push_back(base->warnings());
   }
   more.push_back(pos_warnings);
   for (const auto& m : more) damage.insert(damage.end(), m.begin(), m.end());

@@ -8,6 +8,7 @@
 #include "common/calibration/warm_start.h"
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
+#include "common/gnss/time_differenced_phase.h"
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
 #include "common/io/model_options.h"
@@ -47,6 +48,16 @@ struct OnlineOptions {
   double max_init_window_s = 600.0;
   double progress_interval_s = 60.0;  // live report of what has not converged yet [s]
   ConvergenceOptions convergence;
+};
+
+/// The single-receiver scheme's settings (YAML section calibration.single).
+struct SingleReceiverOptions {
+  TdcpOptions tdcp;
+  // Single point positions anchor the frame and the heading only: their errors (ionosphere,
+  // orbits, multipath) are metres and slow, so each enters with at least this sigma per axis [m].
+  double position_sigma_min_m = 3.0;
+  double tdcp_screen_gate = 4.0;  // a signal's phase change this many sigma off the predicted
+                                  // displacement is left out of its pair (screenTdcp)
 };
 
 struct CalibrationOptions {
@@ -102,6 +113,11 @@ struct CalibrationOptions {
   // Not a YAML key.
   bool loosely_coupled = false;
   PositionWeighting lc;              // calibration.lc.sigma_scale, .use_height, .learn_heights
+  // One receiver and no base (calibrate --gnss single): time-differenced carrier phase between
+  // consecutive rover epochs, Doppler, and single point positions with a loose weight. Not a
+  // YAML key; `single` holds its settings.
+  bool single_receiver = false;
+  SingleReceiverOptions single;
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
   double odometer_interval_s = 1.0;  // odometer preintegration interval (0: every sample) [s]
   // Iterated EKF (Gauss-Newton) updates of each odometer interval: 2 against 1 cut the V-scale

@@ -135,8 +135,9 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
   for (const ObsEpoch& e : in.rover.epochs) {
     if (e.t < t_anchor_min) continue;
     AntennaFix fix;
-    if (options.loosely_coupled) {
-      // The LC scheme starts from the solutions it is given, as it calibrates from them.
+    if (options.loosely_coupled || options.single_receiver) {
+      // The LC scheme starts from the solutions it is given, as it calibrates from them; the
+      // single-receiver scheme from its single point positions.
       const PositionFix* p = fixAt(in.positions, e.t, kPositionTolerance);
       if (!p) continue;
       fix = {e.t, p->p_e,
@@ -256,7 +257,12 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
         R_b_n * Eigen::Vector3d(tilt_sd * tilt_sd, tilt_sd * tilt_sd, var_yaw).asDiagonal() *
         R_b_n.transpose();
     const double lever_sd = d.p_b_g.norm() * std::sqrt(var_yaw);
-    const double sd_pos = std::hypot(at_state.sd_h, lever_sd) + 0.01;
+    // The single-receiver track's sigma is its shape's; its offset is the single point
+    // position's metres.
+    const double sd_abs = options.single_receiver
+                              ? std::max(at_state.sd_h, options.single.position_sigma_min_m)
+                              : at_state.sd_h;
+    const double sd_pos = std::hypot(sd_abs, lever_sd) + 0.01;
     const double sd_vel = anchor_static ? options.models.zupt_sigma
                                         : io.velocity_sigma + std::abs(v_odo) * std::sqrt(var_yaw);
     const Eigen::Vector3d sd_bg =
@@ -276,7 +282,9 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
     return s;
   }
   if (good_epochs == 0) {
-    return fail(options.loosely_coupled
+    return fail(options.single_receiver ? "no single point position at a GNSS epoch (check the "
+                                          "navigation data)"
+                : options.loosely_coupled
                     ? "no position solution at a GNSS epoch"
                     : "no RTK solution of the antenna (check base position and nav)");
   }

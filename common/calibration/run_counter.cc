@@ -18,6 +18,12 @@ const char* counterName(Counter c) {
       return "gnss_epochs_unused";
     case Counter::kCodeOutliers:
       return "code_outliers";
+    case Counter::kTdcpRows:
+      return "tdcp_rows";
+    case Counter::kTdcpSlips:
+      return "tdcp_slips";
+    case Counter::kTdcpScreened:
+      return "tdcp_screened";
     case Counter::kAmbiguityResets:
       return "ambiguity_resets";
     case Counter::kFixesRejected:

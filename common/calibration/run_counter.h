@@ -11,6 +11,9 @@ enum class Counter {
   kGnssRowsRejected,     // DD rows rejected by a gate or after a solve
   kGnssEpochsUnused,     // GNSS epochs (LC: position fixes) that updated nothing
   kCodeOutliers,         // pseudo-ranges flagged by the Doppler-predicted change
+  kTdcpRows,             // single receiver: time-differenced phase rows used
+  kTdcpSlips,            // single receiver: phases left out of a pair (slip or half cycle)
+  kTdcpScreened,         // single receiver: phases off the predicted displacement, left out
   kAmbiguityResets,      // ambiguities restarted (slip or rejected phase row)
   kFixesRejected,        // LAMBDA fixes that failed validation
   kGnssWithoutBase,      // rover epochs with no base epoch near enough

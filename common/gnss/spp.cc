@@ -232,4 +232,24 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
   return sol;
 }
 
+PositionFix sppFix(const SppSolution& spp, double t, double sigma_min) {
+  PositionFix fix;
+  fix.t = t;
+  fix.p_e = spp.p_e;
+  fix.quality = 5;
+  fix.satellites = static_cast<int>(spp.used.size());
+  const Geodetic g = geodeticFromEcef(spp.p_e);
+  const Eigen::Matrix3d R_e_enu = rotationEcefFromEnu(g.lat, g.lon);
+  fix.cov_enu = R_e_enu.transpose() * spp.cov_p * R_e_enu;
+  for (int k = 0; k < 3; ++k) {
+    const double sd = std::sqrt(std::max(fix.cov_enu(k, k), 0.0));
+    if (sd >= sigma_min) continue;
+    // Raise the standard deviation, keeping the correlations.
+    const double f = sigma_min / std::max(sd, 1e-9);
+    fix.cov_enu.row(k) *= f;
+    fix.cov_enu.col(k) *= f;
+  }
+  return fix;
+}
+
 }  // namespace giocal

@@ -8,6 +8,7 @@
 
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/observation.h"
+#include "common/gnss/pos_reader.h"
 #include "common/gnss/weighting.h"
 
 namespace giocal {
@@ -37,6 +38,11 @@ struct SppSolution {
 
 SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
                      const SppOptions& options);
+
+/// The solution as a position fix at time t (RTKLIB's quality 5, single), its ENU covariance's
+/// standard deviations raised to at least `sigma_min` [m]: a single point position's errors are
+/// metres and slow, which its own covariance, from the code noise alone, does not say.
+PositionFix sppFix(const SppSolution& spp, double t, double sigma_min);
 
 /// chi-square quantile for `dof` degrees of freedom (Wilson-Hilferty approximation).
 double chi2Quantile(double probability, int dof);

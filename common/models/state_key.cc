@@ -50,6 +50,8 @@ const char* copySuffix(Copy c) {
       return "@still";
     case Copy::kOdo:
       return "@odo";
+    case Copy::kGnss:
+      return "@gnss";
   }
   return "@?";
 }

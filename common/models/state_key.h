@@ -29,8 +29,8 @@ enum class Quantity : std::uint8_t {
 
 /// Which copy of a quantity: the current one, a two-state model's start (i) and end (j), or the
 /// EKF's stochastic clones (the attitude when the robot stopped, the pose at the start of an
-/// odometer interval).
-enum class Copy : std::uint8_t { kNow, kI, kJ, kStill, kOdo };
+/// odometer interval, the pose at the previous GNSS epoch for time-differenced phase).
+enum class Copy : std::uint8_t { kNow, kI, kJ, kStill, kOdo, kGnss };
 
 struct StateKey {
   Quantity what = Quantity::kPosition;

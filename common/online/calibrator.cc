@@ -1,5 +1,6 @@
 #include "common/online/calibrator.h"
 
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -251,6 +252,15 @@ void Calibrator::acceptRover(ObsEpoch e) {
                                   "odometer alone through it");
   }
   last_rover_t_ = e.t;
+  if (options_.single_receiver) {
+    // Without a base the track of single point positions joined by time-differenced phase
+    // stands for the fixes the initial heading is measured on.
+    if (!track_) {
+      track_ = std::make_unique<TdcpTrack>(*orbits_, options_.single.tdcp,
+                                           options_.single.position_sigma_min_m);
+    }
+    if (const std::optional<PositionFix> fix = track_->add(e)) buf_.positions.push_back(*fix);
+  }
   if (std::isnan(t_rover_first_)) t_rover_first_ = e.t;
   t_rover_last_ = e.t;
   rover_.push_back(std::move(e));

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "common/gnss/tdcp_track.h"
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/calibration_run.h"
@@ -145,6 +146,7 @@ class Calibrator {
   ReorderBuffer<Datum> reorder_;
   CalibrationInputs buf_;  // buffered samples and ephemerides (bounded)
   std::unique_ptr<BroadcastOrbits> orbits_;
+  std::unique_ptr<TdcpTrack> track_;  // the single-receiver scheme's track for the initial state
   std::deque<ObsEpoch> rover_;  // rover epochs not yet processed
   std::unique_ptr<EstimatorCore> core_;
   ConvergenceMonitor convergence_;

@@ -155,8 +155,9 @@ void Calibrator::process() {
 
 void Calibrator::dispatchRover(const ObsEpoch& rover) {
   if (rover.t <= skip_rover_until_ || !core_->acceptsEpoch(rover.t)) return;
-  static const ObsEpoch kNoBase;  // the LC scheme reads no base epoch
-  const ObsEpoch* base = positionsOnly() ? &kNoBase : nearestBase(rover.t);
+  static const ObsEpoch kNoBase;  // the LC and single-receiver schemes read no base epoch
+  const ObsEpoch* base =
+      positionsOnly() || options_.single_receiver ? &kNoBase : nearestBase(rover.t);
   if (!base) {
     noted(Counter::kGnssWithoutBase, "the rover epoch at t=" + timeText(rover.t) +
                                          " has no base epoch within calibration.max_base_offset: "
