@@ -21,6 +21,9 @@ int runSimulateCommand(int argc, char** argv) {
   opts.add_options()("config", po::value<std::string>()->required(), "simulator preset (YAML)")(
       "out", po::value<std::string>()->required(), "output dataset folder")(
       "seed", po::value<std::uint64_t>()->default_value(1), "random seed")(
+      "no-base", po::bool_switch(),
+      "a rover alone (as gnss.base: none in the preset, with its default broadcast, atmosphere "
+      "and clock errors): for --gnss single")(
       "trajectory", po::value<std::string>()->default_value(""),
       "RTKLIB-style .pos of the rover antenna: real GNSS, motion sensors synthesized along it")(
       "rover", po::value<std::string>()->default_value(""), "with --trajectory: rover RINEX")(
@@ -46,8 +49,11 @@ int runSimulateCommand(int argc, char** argv) {
       throw std::runtime_error("--rover, --base and --nav go with --trajectory");
     }
     runSimulate(vm["config"].as<std::string>(), vm["out"].as<std::string>(),
-                vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
+                vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop(),
+                vm["no-base"].as<bool>());
   } else {
+    if (vm["no-base"].as<bool>())
+      throw std::runtime_error("--no-base does not go with --trajectory (not yet)");
     if (given.rover.empty() || given.base.empty()) {
       throw std::runtime_error("--trajectory needs --rover, --base and --nav");
     }

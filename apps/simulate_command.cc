@@ -33,8 +33,12 @@ void refuseDatasetFolder(const std::string& out) {
 }  // namespace
 
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
-                 std::ostream& log, const StopRequest* stop) {
-  const sim::SimConfig cfg = sim::readSimConfig(config);
+                 std::ostream& log, const StopRequest* stop, bool no_base) {
+  sim::SimConfig cfg = sim::readSimConfig(config);
+  if (no_base && cfg.gnss.enabled && cfg.gnss.base) {
+    cfg.gnss.base = false;
+    sim::setSingleReceiverDefaults(cfg.gnss);
+  }
   refuseDatasetFolder(out);
   const auto start = std::chrono::steady_clock::now();
   const sim::SimulatedLogs logs = sim::simulate(cfg, seed);
@@ -50,7 +54,12 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
   log << "simulated '" << cfg.name << "' (seed " << seed
       << "): " << logs.truth.back().t - logs.truth.front().t << " s, " << logs.imu.size()
       << " IMU and " << logs.odom.size() << " odometer samples, " << logs.gnss.rover.size()
-      << " GNSS epochs in " << wall << " s -> " << out << "\n";
+      << " GNSS epochs" << (cfg.gnss.base ? "" : " (a rover alone)") << " in " << wall
+      << " s -> " << out << "\n";
+  if (!cfg.gnss.base) {
+    log << "  rover alone: " << logs.gnss.slips << " slips (" << logs.gnss.half_cycles
+        << " half cycles), " << logs.gnss.clock_steps << " receiver clock steps\n";
+  }
   if (logs.gnss.rover.empty()) log << "note: the config has no gnss section; no RINEX written\n";
 }
 

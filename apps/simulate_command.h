@@ -14,8 +14,9 @@ namespace giocal {
 
 /// Refuses to write into a folder that already holds a dataset (nothing a user wrote is
 /// overwritten); the dataset's files appear together, or none when `stop` is requested.
+/// no_base: a rover alone, as gnss.base: none with sim::setSingleReceiverDefaults.
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
-                 std::ostream& log, const StopRequest* stop = nullptr);
+                 std::ostream& log, const StopRequest* stop = nullptr, bool no_base = false);
 
 /// The given GNSS files and the preset's IMU, odometer and calibration along the path fitted to
 /// `trajectory` (an RTKLIB-style .pos of the rover antenna; fixed and float solutions used).

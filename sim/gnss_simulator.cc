@@ -1,6 +1,7 @@
 #include "sim/gnss_simulator.h"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "common/geodesy/wgs84.h"
@@ -38,6 +39,13 @@ struct Receiver {
 
 struct Geometry {
   double range, range_rate, clock, clock_drift, el, az;
+  Eigen::Vector3d u;  // line of sight, receiver to satellite (ECEF)
+};
+
+// A satellite's broadcast errors: where and when it truly is against its ephemeris.
+struct BroadcastError {
+  Eigen::Vector3d orbit = Eigen::Vector3d::Zero(), orbit_rate = Eigen::Vector3d::Zero();
+  double clock_m = 0.0;
 };
 
 // Exact light-time solution: transmission time, Sagnac rotation by the flight time.
@@ -56,6 +64,7 @@ bool geometry(const BroadcastOrbits& orbits, const SatId& sat, double t_rx,
     tau = (ps - p).norm() / kSpeedOfLight;
   }
   const Eigen::Vector3d u = (ps - p) / (ps - p).norm();
+  g.u = u;
   g.range = (ps - p).norm();
   g.range_rate = u.dot(vs - v);
   g.clock = s.clock - groupDelay(*eph, band);
@@ -104,6 +113,19 @@ SceneSpec sceneDefaults(const std::string& type) {
   return s;
 }
 
+void setSingleReceiverDefaults(GnssSimSpec& spec) {
+  spec.orbit_error_m = 0.5;             // broadcast SISRE of GPS and Galileo: decimetres to 1 m
+  spec.orbit_error_rate = 2e-4;         // about 0.7 m per hour
+  spec.sat_clock_error_m = 0.5;
+  spec.sat_clock_random_walk = 1e-4;    // 0.1 mm in 1 s, 0.5 mm in 30 s
+  spec.vtec_random_walk = 0.002;        // 0.3 mm on L1 in 1 s, 0.12 TECU in an hour
+  spec.zenith_wet_random_walk = 1.7e-4;  // 1 cm per sqrt(hour)
+  spec.clock_step_s = 1e-3;
+  spec.clock_offset_sd = 2e-4;
+  spec.clock_drift_sd = 5e-7;  // a TCXO: the clock walks off and steps every few minutes
+  spec.half_cycle_share = 0.2;
+}
+
 std::vector<std::pair<char, char>> simulatedSignals(GnssSystem sys) {
   switch (sys) {
     case GnssSystem::kGps:
@@ -135,6 +157,24 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
     r.drift = gauss(rng, spec.clock_drift_sd);
     r.zwd = std::max(0.0, 0.1 + gauss(rng, spec.zenith_wet_sd));
   }
+  // The single receiver's errors draw from their own generator, so that datasets with a base
+  // are the same as before they existed.
+  const bool rover_alone_errors = spec.orbit_error_m > 0 || spec.orbit_error_rate > 0 ||
+                                  spec.sat_clock_error_m > 0 || spec.sat_clock_random_walk > 0 ||
+                                  spec.vtec_random_walk > 0 || spec.zenith_wet_random_walk > 0 ||
+                                  spec.half_cycle_share > 0;
+  std::mt19937_64 rng_alone(rover_alone_errors ? rng() : 0);
+  std::map<SatId, BroadcastError> broadcast;
+  for (const SatId& sat : sats) {
+    BroadcastError& b = broadcast[sat];
+    if (!rover_alone_errors) continue;
+    for (int k = 0; k < 3; ++k) {
+      b.orbit[k] = gauss(rng_alone, spec.orbit_error_m);
+      b.orbit_rate[k] = gauss(rng_alone, spec.orbit_error_rate);
+    }
+    b.clock_m = gauss(rng_alone, spec.sat_clock_error_m);
+  }
+  double vtec_walk = 0.0;
   const double mask = spec.elevation_mask_deg * M_PI / 180.0;
   const LocalFrame frame(base_e);  // the ionosphere gradient is measured from the base
   const double dt = 1.0 / spec.rate_hz;
@@ -144,7 +184,7 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
   double heading = 0.0;  // direction of travel (azimuth from north), kept while standing
   for (long k = 0; k <= n; ++k) {
     const double tag = t0 + static_cast<double>(k) * dt;
-    for (int r = 0; r < 2; ++r) {
+    for (int r = 0; r < (spec.base ? 2 : 1); ++r) {
       Receiver& rc = rx[r];
       ObsEpoch ep;
       ep.t = tag;
@@ -166,8 +206,9 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
       }
       // VTEC varies slowly in time and space (a plane gradient across the area).
       const Eigen::Vector3d d_enu = frame.enuFromEcef(p);
-      const double vtec = spec.vtec_tecu * (1.0 + 0.1 * std::sin(2 * M_PI * (tag - t0) / 3600.0)) *
-                          (1.0 + spec.vtec_gradient * (d_enu.x() + d_enu.y()));
+      const double vtec =
+          (spec.vtec_tecu * (1.0 + 0.1 * std::sin(2 * M_PI * (tag - t0) / 3600.0)) + vtec_walk) *
+          (1.0 + spec.vtec_gradient * (d_enu.x() + d_enu.y()));
       for (const SatId& sat : sats) {
         SatObs so;
         so.sat = sat;
@@ -198,22 +239,34 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           const double trop = troposphere(geo.h, g.el, rc.zwd);
           const double sin_el = std::max(std::sin(g.el), 0.05);
           const double factor = std::sqrt(1.0 + 1.0 / sin_el);
-          const double common = g.range + kSpeedOfLight * (rc.clock - g.clock) + trop;
+          const BroadcastError& be = broadcast[sat];
+          const double since = t_true - t0;
+          const double broadcast_m = g.u.dot(be.orbit + be.orbit_rate * since) + be.clock_m;
+          const double common =
+              g.range + broadcast_m + kSpeedOfLight * (rc.clock - g.clock) + trop;
           const auto key = std::make_tuple(r, sat, band);
           if (!out.ambiguity.count(key)) out.ambiguity[key] = amb(rng);
           SignalObs s;
           s.band = band;
           s.attr = attr;
           if (scene && u01(rng) < scene->slip_probability) {
-            out.ambiguity[key] += (u01(rng) < 0.5 ? -1 : 1) * slip_size(rng);
-            if (u01(rng) < 0.5) s.lli = 1;  // half of the slips are flagged by the receiver
+            if (spec.half_cycle_share > 0 && u01(rng_alone) < spec.half_cycle_share) {
+              out.ambiguity[key] += 0.5;  // a half cycle, flagged while unresolved
+              s.lli = 2;
+              ++out.half_cycles;
+            } else {
+              out.ambiguity[key] += (u01(rng) < 0.5 ? -1 : 1) * slip_size(rng);
+              if (u01(rng) < 0.5) s.lli = 1;  // half of the slips are flagged by the receiver
+            }
             ++out.slips;
           }
           const double extra = scene ? gauss(rng, scene->extra_phase_sigma) : 0.0;
           s.P = common + iono + nlos + gauss(rng, spec.code_sigma * factor);
           s.L = (common - iono + extra + gauss(rng, spec.phase_sigma * factor)) / lambda +
                 out.ambiguity[key];
-          s.D = -(g.range_rate + kSpeedOfLight * (rc.drift - g.clock_drift)) / lambda +
+          s.D = -(g.range_rate + g.u.dot(be.orbit_rate) +
+                  kSpeedOfLight * (rc.drift - g.clock_drift)) /
+                    lambda +
                 gauss(rng, spec.doppler_sigma * factor) / lambda;
           s.S = std::round((35.0 + 15.0 * sin_el) * 4.0) / 4.0;
           so.signals.push_back(s);
@@ -221,8 +274,20 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
         if (!so.signals.empty()) ep.sats.push_back(so);
       }
       (r == 0 ? out.rover : out.base).push_back(ep);
-      // Clock: drift plus a random walk, advanced to the next epoch.
+      // Clock: drift plus a random walk, advanced to the next epoch; a receiver that keeps its
+      // clock within half a step of GPS time steps it (time tag, code and phase alike).
       rc.clock += rc.drift * dt + gauss(rng, spec.clock_random_walk * std::sqrt(dt));
+      if (spec.clock_step_s > 0 && std::abs(rc.clock) > 0.5 * spec.clock_step_s) {
+        rc.clock -= std::copysign(spec.clock_step_s, rc.clock);
+        out.clock_steps += r == 0;
+      }
+      if (spec.zenith_wet_random_walk > 0)
+        rc.zwd += gauss(rng_alone, spec.zenith_wet_random_walk * std::sqrt(dt));
+    }
+    if (rover_alone_errors) {
+      vtec_walk += gauss(rng_alone, spec.vtec_random_walk * std::sqrt(dt));
+      for (auto& [sat, b] : broadcast)
+        b.clock_m += gauss(rng_alone, spec.sat_clock_random_walk * std::sqrt(dt));
     }
   }
   return out;

@@ -54,7 +54,25 @@ struct GnssSimSpec {
   double vtec_tecu = 15.0;           // vertical TEC at the origin [TECU]
   double vtec_gradient = 5e-7;       // relative VTEC change per metre (0.5 ppm/m: 4 km -> 0.2 %)
   std::vector<SceneSpec> scenes;     // the rover's scenes; open sky where none applies
+  // gnss.base: none: a rover alone, no base receiver written. Then what a single receiver meets
+  // and a base would cancel is on by default (gnss_sim_config's defaults; 0 turns one off):
+  bool base = true;
+  double orbit_error_m = 0.0;            // broadcast orbit error per axis, 1-sigma [m]
+  double orbit_error_rate = 0.0;         // its change, 1-sigma per axis [m/s]
+  double sat_clock_error_m = 0.0;        // broadcast satellite clock error, 1-sigma [m]
+  double sat_clock_random_walk = 0.0;    // its random walk [m/sqrt(s)]
+  double vtec_random_walk = 0.0;         // vertical TEC random walk [TECU/sqrt(s)]
+  double zenith_wet_random_walk = 0.0;   // zenith wet delay random walk [m/sqrt(s)]
+  double clock_step_s = 0.0;             // the receiver steps its clock by this when it is
+                                         // half of it off (u-blox: 1 ms) [s]
+  double half_cycle_share = 0.0;         // share of the scenes' slips that are half cycles,
+                                         // flagged LLI bit 1 at the epoch
 };
+
+/// What a rover alone meets (gnss.base: none): broadcast orbit and clock errors, ionosphere,
+/// troposphere and satellite clocks that drift, a u-blox-like receiver clock that steps by 1 ms,
+/// and half-cycle slips. Sizes from the broadcast-ephemeris and TDCP literature; docs/design.md.
+void setSingleReceiverDefaults(GnssSimSpec& spec);
 
 /// The true antenna trajectory: ECEF position and velocity at GPS time t.
 using AntennaTruth = std::function<void(double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e)>;
@@ -64,7 +82,9 @@ struct SimulatedGnss {
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   /// The integer ambiguity of each (receiver 0 rover / 1 base, satellite, band) [cycles].
   std::map<std::tuple<int, SatId, char>, double> ambiguity;
-  int slips = 0;  // cycle slips put into the rover's phases by scenes
+  int slips = 0;        // cycle slips put into the rover's phases by scenes
+  int half_cycles = 0;  // of them half-cycle slips
+  int clock_steps = 0;  // receiver clock steps (clock_step_s)
 };
 
 /// Observations at t0, t0 + 1/rate, ... up to t1 (receiver time tags at whole steps).

@@ -119,6 +119,22 @@ SimConfig readSimConfig(const std::string& path) {
     g.doppler_sigma = y.numberOr("gnss.doppler_sigma", g.doppler_sigma, 0.0, 10.0);
     if (y.has("gnss.base_offset_enu"))
       g.base_offset_enu = y.vector3("gnss.base_offset_enu", -1e5, 1e5);
+    if (y.has("gnss.base")) {
+      const std::string base = y.text("gnss.base");
+      if (base != "none") y.fail("gnss.base", "is 'none' (a rover alone) or left out");
+      g.base = false;
+      setSingleReceiverDefaults(g);
+    }
+    g.orbit_error_m = y.numberOr("gnss.orbit_error_m", g.orbit_error_m, 0.0, 100.0);
+    g.orbit_error_rate = y.numberOr("gnss.orbit_error_rate", g.orbit_error_rate, 0.0, 0.1);
+    g.sat_clock_error_m = y.numberOr("gnss.sat_clock_error_m", g.sat_clock_error_m, 0.0, 100.0);
+    g.sat_clock_random_walk =
+        y.numberOr("gnss.sat_clock_random_walk", g.sat_clock_random_walk, 0.0, 0.1);
+    g.vtec_random_walk = y.numberOr("gnss.vtec_random_walk", g.vtec_random_walk, 0.0, 1.0);
+    g.zenith_wet_random_walk =
+        y.numberOr("gnss.zenith_wet_random_walk", g.zenith_wet_random_walk, 0.0, 0.01);
+    g.clock_step_s = y.numberOr("gnss.clock_step_s", g.clock_step_s, 0.0, 0.01);
+    g.half_cycle_share = y.numberOr("gnss.half_cycle_share", g.half_cycle_share, 0.0, 1.0);
     g.clock_offset_sd = y.numberOr("gnss.clock_offset_sd", g.clock_offset_sd, 0.0, 1e-3);
     g.clock_drift_sd = y.numberOr("gnss.clock_drift_sd", g.clock_drift_sd, 0.0, 1e-5);
     g.zenith_wet_sd = y.numberOr("gnss.zenith_wet_sd", g.zenith_wet_sd, 0.0, 1.0);

@@ -184,7 +184,11 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
       antenna(e.t, p, v);
       out.antenna_e.push_back(p);
     }
-    out.description.base_position_ecef = base_e;
+    if (config.gnss.base) {
+      out.description.base_position_ecef = base_e;
+    } else {
+      out.description.base_obs.clear();  // a rover alone
+    }
   }
 
   return out;
@@ -213,9 +217,11 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
     // A receiver's own approximate position: the first antenna position, metres off.
     h.approx_position = logs.antenna_e.front() + Eigen::Vector3d(2.0, -3.0, 1.5);
     writeRinexObs(d.pathOf(d.rover_obs), h, logs.gnss.rover);
-    h.marker = "BASE";
-    h.approx_position = logs.gnss.base_e;
-    writeRinexObs(d.pathOf(d.base_obs), h, logs.gnss.base);
+    if (!d.base_obs.empty()) {
+      h.marker = "BASE";
+      h.approx_position = logs.gnss.base_e;
+      writeRinexObs(d.pathOf(d.base_obs), h, logs.gnss.base);
+    }
     std::filesystem::copy_file(logs.nav_file, d.pathOf(d.nav.front()),
                                std::filesystem::copy_options::overwrite_existing);
     // The source may be read-only (shipped data); the dataset's copy belongs to the user.
