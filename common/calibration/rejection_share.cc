@@ -4,6 +4,24 @@
 
 namespace giocal {
 
+namespace {
+
+// The GNSS rows a run used: the positions' three per fix, else the double differences, else (a
+// single receiver) the time-differenced phase rows.
+long gnssRowsUsed(const CalibrationRun& run, bool positions_only) {
+  if (positions_only) return 3L * run.gnss_epochs;
+  return run.counter(Counter::kDdRows) + run.counter(Counter::kTdcpRows);
+}
+
+std::string gnssRowsName(const CalibrationRun& run, bool positions_only) {
+  if (positions_only) return "GNSS position rows";
+  return run.counter(Counter::kDdRows) == 0 && run.counter(Counter::kTdcpRows) > 0
+             ? "time-differenced phase and Doppler rows"
+             : "double-difference GNSS rows";
+}
+
+}  // namespace
+
 std::vector<std::string> rejectionShareWarnings(const CalibrationRun& run, bool positions_only,
                                                 double fraction) {
   std::vector<std::string> out;
@@ -18,14 +36,12 @@ std::vector<std::string> rejectionShareWarnings(const CalibrationRun& run, bool 
                   "against the GNSS solution before using the calibration");
   };
   // odometer_intervals counts every interval, odometer_rejected those of them gated out;
-  // dd_rows counts the DD rows used and gnss_rows_rejected the others, or with positions a
-  // rejected fix as three rows and gnss_epochs the fixes used.
+  // dd_rows (a single receiver: tdcp_rows) counts the GNSS rows used and gnss_rows_rejected the
+  // others, or with positions a rejected fix as three rows and gnss_epochs the fixes used.
   share(run.counter(Counter::kOdometerRejected), run.counter(Counter::kOdometerIntervals),
         "odometer intervals");
-  const long used = positions_only ? 3L * run.gnss_epochs : run.counter(Counter::kDdRows);
   const long rejected = run.counter(Counter::kGnssRowsRejected);
-  share(rejected, used + rejected,
-        positions_only ? "GNSS position rows" : "double-difference GNSS rows");
+  share(rejected, gnssRowsUsed(run, positions_only) + rejected, gnssRowsName(run, positions_only));
   return out;
 }
 
@@ -38,13 +54,10 @@ std::string suspectReason(const CalibrationRun& run, bool positions_only, bool l
   const long odo_rejected = run.counter(Counter::kOdometerRejected);
   if (over_half(odo_rejected, odo))
     return of(odo_rejected, odo, "odometer intervals rejected by the gates");
-  const long used = positions_only ? 3L * run.gnss_epochs : run.counter(Counter::kDdRows);
+  const long used = gnssRowsUsed(run, positions_only);
   const long rejected = run.counter(Counter::kGnssRowsRejected);
-  if (over_half(rejected, used + rejected)) {
-    return of(rejected, used + rejected,
-              std::string(positions_only ? "GNSS position rows" : "double-difference GNSS rows") +
-                  " rejected by the gates");
-  }
+  if (over_half(rejected, used + rejected))
+    return of(rejected, used + rejected, gnssRowsName(run, positions_only) + " rejected by the gates");
   const long unused = run.counter(Counter::kGnssEpochsUnused);
   if (loosely_coupled && over_half(unused, unused + run.gnss_epochs))
     return of(unused, unused + run.gnss_epochs, "position fixes updated nothing");

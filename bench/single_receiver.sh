@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# One receiver against RTK: for each seed and preset, the same drive simulated with a base and
+# as a rover alone (--no-base: broadcast orbit and clock errors, drifting atmosphere, receiver
+# clock steps, half-cycle slips); the EKF calibrates the first with RTK (TC-AR) and the second
+# with --gnss single. Prints per preset and state the mean |error| of each scheme and their
+# ratio, the mean |error|/sigma, the mean NEES7, and the EKF's speed on the rover alone.
+# Usage: [PRESETS="paper field"] bench/single_receiver.sh [seed...]
+#          (default seeds 6001-6010; about 15 s per seed and preset)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+giocal="${GIOCAL_BIN:-$root/build/apps/giocal}"
+seeds=("${@:-6001 6002 6003 6004 6005 6006 6007 6008 6009 6010}")
+read -r -a seeds <<< "${seeds[*]}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+for preset in ${PRESETS:-paper field}; do
+  sed "s|\.\./\.\./data/|$root/data/|" "$root/config/sim/$preset.yaml" > "$work/$preset.yaml"
+  for seed in "${seeds[@]}"; do
+    d="$work/$preset-$seed"
+    "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --out "$d-base" > /dev/null
+    "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --no-base --out "$d-alone" \
+      > /dev/null
+    "$giocal" calibrate --data "$d-base" --quiet --out "$d-rtk" > /dev/null 2>&1 || true
+    "$giocal" calibrate --data "$d-alone" --quiet --out "$d-single" > /dev/null 2>&1 || true
+  done
+done
+python3 - "$work" "${seeds[@]}" <<'PY'
+import json, os, sys
+work, seeds = sys.argv[1], sys.argv[2:]
+states = [("s_v", lambda v: v["s_v"]), ("s_w", lambda v: v["s_w"]),
+          ("p_b_m.x", lambda v: v["p_b_m"][0]), ("p_b_m.y", lambda v: v["p_b_m"][1]),
+          ("roll", lambda v: v["rpy_b_m_deg"][0]), ("pitch", lambda v: v["rpy_b_m_deg"][1]),
+          ("yaw", lambda v: v["rpy_b_m_deg"][2])]
+for preset in os.environ.get("PRESETS", "paper field").split():
+    runs = {"rtk": [], "single": []}
+    for seed in seeds:
+        for scheme in runs:
+            f = os.path.join(work, f"{preset}-{seed}-{scheme}", "summary.json")
+            runs[scheme].append(json.load(open(f)) if os.path.exists(f) else None)
+    ok = {k: sum(1 for s in v if s and s["status"] == "ok") for k, v in runs.items()}
+    print(f"{preset} preset, seeds {seeds[0]}-{seeds[-1]}: runs ok: RTK {ok['rtk']}, "
+          f"single {ok['single']} of {len(seeds)}")
+    print(f"  {'state':8} {'RTK |err|':>11} {'single |err|':>13} {'ratio':>6} "
+          f"{'RTK err/sd':>11} {'single err/sd':>14}")
+    for name, get in states:
+        row = {}
+        for scheme, summaries in runs.items():
+            pairs = [(abs(get(s["error"])), abs(get(s["error"])) / get(s["sd"]))
+                     for s in summaries if s and s["status"] == "ok"]
+            row[scheme] = (sum(p[0] for p in pairs) / len(pairs), sum(p[1] for p in pairs) / len(pairs))
+        print(f"  {name:8} {row['rtk'][0]:11.5f} {row['single'][0]:13.5f} "
+              f"{row['single'][0] / row['rtk'][0]:6.2f} {row['rtk'][1]:11.2f} {row['single'][1]:14.2f}")
+    for scheme, summaries in runs.items():
+        good = [s for s in summaries if s and s["status"] == "ok"]
+        nees = sum(s["error"]["nees7"] for s in good) / len(good)
+        speed = sum(s["real_time_factor"] for s in good) / len(good)
+        print(f"  {scheme}: mean NEES7 {nees:.1f}, mean speed {speed:.0f}x real time")
+PY
