@@ -27,7 +27,8 @@ int runSimulateCommand(int argc, char** argv) {
       "trajectory", po::value<std::string>()->default_value(""),
       "RTKLIB-style .pos of the rover antenna: real GNSS, motion sensors synthesized along it")(
       "rover", po::value<std::string>()->default_value(""), "with --trajectory: rover RINEX")(
-      "base", po::value<std::string>()->default_value(""), "with --trajectory: base RINEX")(
+      "base", po::value<std::string>()->default_value(""),
+      "with --trajectory: base RINEX (left out: a rover alone, for --gnss single)")(
       "nav", po::value<std::vector<std::string>>()->multitoken(),
       "with --trajectory: RINEX navigation file(s)")(
       "knot-spacing", po::value<double>()->default_value(0.0),
@@ -54,8 +55,9 @@ int runSimulateCommand(int argc, char** argv) {
   } else {
     if (vm["no-base"].as<bool>())
       throw std::runtime_error("--no-base does not go with --trajectory (not yet)");
-    if (given.rover.empty() || given.base.empty()) {
-      throw std::runtime_error("--trajectory needs --rover, --base and --nav");
+    if (given.rover.empty()) {
+      throw std::runtime_error(
+          "--trajectory needs --rover and --nav (and --base, but for a rover alone)");
     }
     runSimulateAlong(vm["config"].as<std::string>(), given, vm["out"].as<std::string>(),
                      vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());

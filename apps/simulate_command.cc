@@ -74,7 +74,8 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   const sim::SimConfig cfg = sim::readSimConfig(config);
   refuseDatasetFolder(out);
   if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
-  std::vector<std::string> given{gnss.rover, gnss.base};
+  std::vector<std::string> given{gnss.rover};
+  if (!gnss.base.empty()) given.push_back(gnss.base);  // without: a rover alone
   given.insert(given.end(), gnss.nav.begin(), gnss.nav.end());
   for (const std::string& f : given) {
     if (!std::filesystem::is_regular_file(f)) throw std::runtime_error(f + ": file missing");
@@ -123,6 +124,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   for (size_t k = 0; k < gnss.nav.size(); ++k) {
     d.nav.push_back(k == 0 ? "nav.rnx" : "nav" + std::to_string(k + 1) + ".rnx");
   }
+  if (gnss.base.empty()) d.base_obs.clear();  // a rover alone
   OutputSet outputs(out);
   outputs.stagedPath("dataset.yaml", true);
   sim::writeDataset(logs, outputs.staging());
@@ -132,7 +134,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
                                  std::filesystem::perm_options::add);
   };
   copy(gnss.rover, d.rover_obs);
-  copy(gnss.base, d.base_obs);
+  if (!gnss.base.empty()) copy(gnss.base, d.base_obs);
   for (size_t k = 0; k < gnss.nav.size(); ++k) copy(gnss.nav[k], d.nav[k]);
   checkStop(stop);
   outputs.commit();
