@@ -88,14 +88,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   }
   replay.stop = job.stop;
   DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
-  const DatasetDescription& d = data.description;
-  if (!job.single && job.positions.empty() && !d.rover_obs.empty() && d.base_obs.empty()) {
-    log << "  dataset.yaml names no base observations: the single-receiver scheme (--gnss "
-           "single)\n";
-  }
-  replay.options.single_receiver =
-      job.single || (job.positions.empty() && !d.rover_obs.empty() && d.base_obs.empty());
-  if (replay.options.single_receiver) coreFactory(job.estimator, replay.options);
+  chooseSingleReceiver(data.description, job.single, replay, log);
   // Warm start: the earlier drive's calibration, its covariance grown for the days between.
   std::string warm;
   if (!job.prior.empty()) {

@@ -43,6 +43,7 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
   replay.options.loosely_coupled = !job.positions.empty();
   replay.stop = job.stop;
   DatasetFolder data = openDatasetFolder(job.data);  // once for both runs
+  chooseSingleReceiver(data.description, job.single, replay, log);
   // The odometer's delay and the solutions' heights, measured and acted on as calibrate does.
   const RunPreparation prepared = prepareRun(data, replay, log);
   OutputSet outputs(out);

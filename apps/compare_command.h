@@ -12,6 +12,7 @@ namespace giocal {
 struct CompareJob {
   std::string data, config, out;  // out empty: <data>/giocal_compare
   std::string positions;          // --gnss lc --pos <file.pos>: the LC scheme
+  bool single = false;            // --gnss single (also taken when dataset.yaml names no base)
   bool overwrite = false;
   bool quiet = false;                 // no progress line
   const StopRequest* stop = nullptr;  // Ctrl-C: the runs stop and nothing is written

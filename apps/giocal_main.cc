@@ -39,7 +39,7 @@ const char* kUsage =
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--gnss tc|single|lc --pos <file.pos>]\n"
     "                   [--config <yaml>] --out <dir> [--overwrite] [--quiet]\n"
-    "  giocal compare   --data <dir> [--gnss tc|lc --pos <file.pos>] [--config <yaml>] [--out "
+    "  giocal compare   --data <dir> [--gnss tc|single|lc --pos <file.pos>] [--config <yaml>] [--out "
     "<dir>]\n"
     "                   [--overwrite] [--quiet]\n"
     "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
@@ -146,13 +146,13 @@ void addGnssOptions(po::options_description& opts) {
       "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
 }
 
-/// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Only calibrate
-/// takes --gnss single so far.
+/// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Only calibrate and
+/// compare take --gnss single so far.
 std::string lcPositions(const po::variables_map& vm, bool single_allowed = false) {
   const std::string gnss = vm["gnss"].as<std::string>();
   if (gnss == "single" && !single_allowed)
-    throw po::error("--gnss single: only giocal calibrate --estimator ekf has the single-receiver "
-                    "scheme so far");
+    throw po::error("--gnss single: only calibrate and compare have the single-receiver scheme "
+                    "so far");
   if (gnss != "tc" && gnss != "lc" && gnss != "single")
     throw po::error("--gnss must be tc, lc or single, not '" + gnss + "'");
   if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
@@ -203,7 +203,8 @@ int runCompareCommand(int argc, char** argv) {
                            "giocal compare --data /tmp/paper --out /tmp/paper-compare");
   giocal::CompareJob job;
   job.data = vm["data"].as<std::string>();
-  job.positions = lcPositions(vm);
+  job.positions = lcPositions(vm, true);
+  job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();

@@ -37,6 +37,7 @@ FactorGraphCore::FactorGraphCore(const CalibrationInputs& sensors, const Broadca
       frame_(init.origin_e),
       orbits_(orbits),
       builder_(orbits_, sensors.base_e, o.dd),
+      tdcp_(orbits_, o.single.tdcp),
       rover_check_(o.code_outliers),
       base_check_(o.code_outliers),
       motion_(withImuNoise(o.models.motion, sensors.description.imu_noise.gyro_noise_density,
@@ -287,6 +288,8 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
                     0.0,
                     tagged("position", e.k)});
     }
+  } else if (o_.single_receiver) {
+    singleFactors(e, prev, rover);
   } else {
     gnssFactors(e, rover, base);
     if (e.diverged) {
@@ -300,6 +303,8 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   FgoEpoch& cur = epochs_.back();
   solveWindow();
   for (int r = 0; r < fo_.max_rejections && rejectWorstRow(cur); ++r) solveWindow();
+  for (int r = 0; r < fo_.max_rejections && rejectWorstTdcp(cur, epochs_[epochs_.size() - 2]); ++r)
+    solveWindow();
   if (fix && rejectPosition(cur, *fix)) {
     fix = nullptr;
     solveWindow();
@@ -308,9 +313,10 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
   if (rejectOdometer(cur)) solveWindow();
   EpochOutcome out;
   out.used = !o_.loosely_coupled || fix;
-  out.fixed =
-      o_.loosely_coupled ? fix && fix->quality == 1 : o_.ambiguity_resolution && resolve(cur);
+  out.fixed = o_.loosely_coupled ? fix && fix->quality == 1
+                                 : !o_.single_receiver && o_.ambiguity_resolution && resolve(cur);
   run_->count(Counter::kDdRows, static_cast<long>(cur.code_rows.size() + cur.phase_rows.size()));
+  run_->count(Counter::kTdcpRows, static_cast<long>(cur.tdcp.rows.size()));
   out.recorded = true;
   out.estimate = estimate(cur);
   outputTrajectory(epochs_[epochs_.size() - 2], cur);

@@ -18,6 +18,7 @@
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
 #include "common/gnss/doppler.h"
+#include "common/gnss/time_differenced_phase.h"
 #include "common/imu/imu_preintegration.h"
 #include "common/models/dd_gnss_model.h"
 #include "common/motion/motion_detector.h"
@@ -37,6 +38,7 @@ struct FgoEpoch {
   DdEpoch dd;
   std::vector<DdObservation> code_rows, phase_rows;
   std::vector<DopplerObservation> doppler;
+  TdcpPair tdcp;  // the single-receiver scheme: the phase changes since the previous epoch
   Eigen::Vector3d gyro = Eigen::Vector3d::Zero();
 
   std::vector<StateKey> all() const { return {p, q, v, ba, bg, sv, sw, cd}; }
@@ -78,6 +80,14 @@ class FactorGraphCore : public EstimatorCore {
   // GNSS factors (fgo/factor_graph_gnss.cc).
   void gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsEpoch& base);
   void addGnssRowFactors(const FgoEpoch& e);
+  /// The clock drift's start value from the epoch's Doppler, once (the median residual at zero).
+  void startClockDrift(const FgoEpoch& e);
+  // The single-receiver scheme (fgo/factor_graph_single.cc).
+  Eigen::Vector3d antennaOf(const FgoEpoch& e) const;
+  void singleFactors(FgoEpoch& e, const FgoEpoch& prev, const ObsEpoch& rover);
+  void addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev);
+  /// After a solve: the TDCP row beyond fgo.rejection_sigma goes with its signal; true if one did.
+  bool rejectWorstTdcp(FgoEpoch& e, const FgoEpoch& prev);
   /// The LC scheme's position factor of epoch e removed when its solved residual fails the
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
@@ -114,6 +124,7 @@ class FactorGraphCore : public EstimatorCore {
   LocalFrame frame_;
   const BroadcastOrbits& orbits_;
   DdEpochBuilder builder_;
+  TdcpBuilder tdcp_;  // the single-receiver scheme
   CodeOutlierCheck rover_check_, base_check_;
   MotionDetector motion_;
   std::vector<int> held_;  // calibration states the run keeps at the prior (heldStates)

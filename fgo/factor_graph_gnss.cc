@@ -112,6 +112,11 @@ void FactorGraphCore::gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsE
                               in_.description.imu_noise.gyro_noise_density);
   e.gyro = g.rate;
   e.doppler = dopplerObservations(rover, orbits_, ant_e, o_.doppler, e.dd.rover_satellites);
+  startClockDrift(e);
+  addGnssRowFactors(e);
+}
+
+void FactorGraphCore::startClockDrift(const FgoEpoch& e) {
   if (e.doppler.size() >= 4 && !clock_drift_started_) {
     // Start the clock drift from the median residual at zero drift.
     const DopplerModel m(frame_.R_e_n(), e.gyro, e.doppler);
@@ -123,7 +128,6 @@ void FactorGraphCore::gnssFactors(FgoEpoch& e, const ObsEpoch& rover, const ObsE
     w_.value(e.cd)[0] = -median(std::vector<double>(r.data(), r.data() + r.size()));
     clock_drift_started_ = true;
   }
-  addGnssRowFactors(e);
 }
 
 void FactorGraphCore::addGnssRowFactors(const FgoEpoch& e) {

@@ -26,11 +26,6 @@ CoreFactory coreFactory(const std::string& name, const CalibrationOptions& optio
     };
   }
 #if GIOCAL_FACTOR_GRAPH
-  if (name == "fgo" && options.single_receiver) {
-    throw std::invalid_argument(
-        "--estimator fgo with --gnss single (or a dataset without a base): the factor graph has "
-        "no single-receiver scheme yet; the EKF has (--estimator ekf)");
-  }
   if (name == "fgo") {
     return [options, fgo_options](const CalibrationInputs& sensors, const BroadcastOrbits& orbits,
                                   const InitialState& init) -> std::unique_ptr<EstimatorCore> {

@@ -17,6 +17,12 @@ struct RunPreparation {
   double height_scale_applied = 0.0;  // put on the solutions' height sigmas (0: none)
 };
 
+/// The GNSS scheme: the single-receiver one when asked (--gnss single) or when the dataset has
+/// a rover and no base and no position solutions are given (said in one line to `log`).
+/// Sets job.options.single_receiver.
+void chooseSingleReceiver(const DatasetDescription& d, bool asked, ReplayJob& job,
+                          std::ostream& log);
+
 /// Measures and acts: data's time offsets and job.options change where the measures say so;
 /// one line to `log` for each change.
 RunPreparation prepareRun(DatasetFolder& data, ReplayJob& job, std::ostream& log);

@@ -1,0 +1,88 @@
+// The factor graph's single-receiver factors (no base): time-differenced carrier phase linking
+// the epoch's pose with the previous epoch's (screened against the IMU's prediction, then rows
+// left out after the solve while beyond the rejection sigma), Doppler with the clock drift, and
+// the single point position with a loose weight.
+#include <cmath>
+
+#include "common/gnss/spp.h"
+#include "common/imu/gyro_mean.h"
+#include "common/models/position_model.h"
+#include "common/models/tdcp_model.h"
+#include "fgo/factor_graph_core.h"
+#include "fgo/factor_tag.h"
+
+namespace giocal {
+
+using fgo_tag::tagged;
+using state::kPbg;
+
+namespace {
+
+// The IMU's prediction of one epoch's displacement from the solved epoch before it, 1-sigma:
+// centimetres over the second between epochs (the factor graph keeps no covariance to ask).
+constexpr double kPredictedDisplacementSigma_m = 0.05;
+
+}  // namespace
+
+Eigen::Vector3d FactorGraphCore::antennaOf(const FgoEpoch& e) const {
+  const NavState x = nav(e);
+  return frame_.ecefFromEnu(x.p_n_b + x.q_n_b * w_.value(kPbg));
+}
+
+void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const ObsEpoch& rover) {
+  const Eigen::Vector3d ant_e = antennaOf(e);
+  e.tdcp = tdcp_.add(rover, ant_e);
+  run_->count(Counter::kTdcpSlips, e.tdcp.left_out.slipped + e.tdcp.left_out.half_cycle);
+  if (e.tdcp.rows.empty() || std::abs(prev.t - e.tdcp.t0) > 1e-6) {
+    e.tdcp.rows.clear();
+  } else {
+    run_->count(Counter::kTdcpScreened,
+                screenTdcp(e.tdcp, antennaOf(prev), ant_e, kPredictedDisplacementSigma_m,
+                           o_.single.tdcp_screen_gate));
+    if (e.tdcp.rows.size() < 3) e.tdcp.rows.clear();
+  }
+  const SppSolution spp = solveSpp(rover, orbits_, SppOptions{});
+  if (spp.valid) {
+    const PositionFix fix = sppFix(spp, e.t, o_.single.position_sigma_min_m);
+    w_.addFactor({std::make_shared<PositionModel>(positionModelOf(frame_, fix, PositionWeighting{})),
+                  {e.p, e.q, kPbg},
+                  fo_.code_huber,
+                  tagged("position", e.k)});
+  }
+  e.gyro = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
+                    in_.description.imu_noise.gyro_noise_density)
+               .rate;
+  e.doppler = dopplerObservations(rover, orbits_, ant_e, o_.doppler, {});
+  startClockDrift(e);
+  addGnssRowFactors(e);
+  addTdcpFactor(e, prev);
+}
+
+void FactorGraphCore::addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev) {
+  w_.removeFactors(tagged("tdcp", e.k));
+  if (e.tdcp.rows.empty()) return;
+  w_.addFactor({std::make_shared<TdcpModel>(frame_, e.tdcp),
+                {prev.p, prev.q, e.p, e.q, kPbg},
+                0.0,
+                tagged("tdcp", e.k)});
+}
+
+bool FactorGraphCore::rejectWorstTdcp(FgoEpoch& e, const FgoEpoch& prev) {
+  if (e.tdcp.rows.empty()) return false;
+  const TdcpModel m(frame_, e.tdcp);
+  const double* params[5] = {w_.value(prev.p).data(), w_.value(prev.q).data(),
+                             w_.value(e.p).data(), w_.value(e.q).data(), w_.value(kPbg).data()};
+  Eigen::VectorXd r;
+  m.evaluate(params, r, nullptr);
+  const Eigen::VectorXd z = r.cwiseAbs().cwiseQuotient(m.covariance().diagonal().cwiseSqrt());
+  long worst = 0;
+  if (z.maxCoeff(&worst) <= fo_.rejection_sigma) return false;
+  run_->count(Counter::kGnssRowsRejected);
+  e.tdcp.signals.erase(e.tdcp.signals.begin() + e.tdcp.rows[static_cast<size_t>(worst)].signal);
+  formRows(e.tdcp);
+  if (e.tdcp.rows.size() < 3) e.tdcp.rows.clear();
+  addTdcpFactor(e, prev);
+  return true;
+}
+
+}  // namespace giocal
