@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # One receiver against RTK: for each seed and preset, the same drive simulated with a base and
 # as a rover alone (--no-base: broadcast orbit and clock errors, drifting atmosphere, receiver
-# clock steps, half-cycle slips); the EKF calibrates the first with RTK (TC-AR) and the second
+# clock steps, half-cycle slips); the estimator calibrates the first with RTK (TC-AR), the second
 # with --gnss single. Prints per preset and state the mean |error| of each scheme and their
-# ratio, the mean |error|/sigma, the mean NEES7, and the EKF's speed on the rover alone.
-# Usage: [PRESETS="paper field"] bench/single_receiver.sh [seed...]
+# ratio, the mean |error|/sigma, the mean NEES7, and the speed.
+# Usage: [PRESETS="paper field"] [ESTIMATOR=ekf|fgo] bench/single_receiver.sh [seed...]
 #          (default seeds 6001-6010; about 15 s per seed and preset)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 giocal="${GIOCAL_BIN:-$root/build/apps/giocal}"
+est="${ESTIMATOR:-ekf}"
 seeds=("${@:-6001 6002 6003 6004 6005 6006 6007 6008 6009 6010}")
 read -r -a seeds <<< "${seeds[*]}"
 work="$(mktemp -d)"
@@ -20,13 +21,15 @@ for preset in ${PRESETS:-paper field}; do
     "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --out "$d-base" > /dev/null
     "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --no-base --out "$d-alone" \
       > /dev/null
-    "$giocal" calibrate --data "$d-base" --quiet --out "$d-rtk" > /dev/null 2>&1 || true
-    "$giocal" calibrate --data "$d-alone" --quiet --out "$d-single" > /dev/null 2>&1 || true
+    "$giocal" calibrate --data "$d-base" --estimator "$est" --quiet --out "$d-rtk" \
+      > /dev/null 2>&1 || true
+    "$giocal" calibrate --data "$d-alone" --estimator "$est" --quiet --out "$d-single" \
+      > /dev/null 2>&1 || true
   done
 done
-python3 - "$work" "${seeds[@]}" <<'PY'
+python3 - "$work" "$est" "${seeds[@]}" <<'PY'
 import json, os, sys
-work, seeds = sys.argv[1], sys.argv[2:]
+work, est, seeds = sys.argv[1], sys.argv[2], sys.argv[3:]
 states = [("s_v", lambda v: v["s_v"]), ("s_w", lambda v: v["s_w"]),
           ("p_b_m.x", lambda v: v["p_b_m"][0]), ("p_b_m.y", lambda v: v["p_b_m"][1]),
           ("roll", lambda v: v["rpy_b_m_deg"][0]), ("pitch", lambda v: v["rpy_b_m_deg"][1]),
@@ -38,7 +41,7 @@ for preset in os.environ.get("PRESETS", "paper field").split():
             f = os.path.join(work, f"{preset}-{seed}-{scheme}", "summary.json")
             runs[scheme].append(json.load(open(f)) if os.path.exists(f) else None)
     ok = {k: sum(1 for s in v if s and s["status"] == "ok") for k, v in runs.items()}
-    print(f"{preset} preset, seeds {seeds[0]}-{seeds[-1]}: runs ok: RTK {ok['rtk']}, "
+    print(f"{preset} preset, {est}, seeds {seeds[0]}-{seeds[-1]}: runs ok: RTK {ok['rtk']}, "
           f"single {ok['single']} of {len(seeds)}")
     print(f"  {'state':8} {'RTK |err|':>11} {'single |err|':>13} {'ratio':>6} "
           f"{'RTK err/sd':>11} {'single err/sd':>14}")

@@ -9,14 +9,14 @@
 
 namespace giocal {
 
-int updateDoppler(CalibrationFilter& f, const BroadcastOrbits& orbits,
-                  const CalibrationOptions& options, const ObsEpoch& rover,
-                  const Eigen::Vector3d& ant_e, const std::vector<RoverSatellite>& known,
-                  double dt) {
-  int rejected = 0;
+DopplerRows updateDoppler(CalibrationFilter& f, const BroadcastOrbits& orbits,
+                          const CalibrationOptions& options, const ObsEpoch& rover,
+                          const Eigen::Vector3d& ant_e, const std::vector<RoverSatellite>& known,
+                          double dt) {
+  DopplerRows rows;
   std::vector<DopplerObservation> obs =
       dopplerObservations(rover, orbits, ant_e, options.doppler, known);
-  if (obs.size() < 4) return rejected;
+  if (obs.size() < 4) return rows;
   StateRegistry& s = f.state();
   const CalibrationFilter::Gyro gyro = f.gyroAt(rover.t);
   const std::vector<StateKey> keys{state::kV, state::kQ, state::kBg, state::kPbg,
@@ -45,12 +45,13 @@ int updateDoppler(CalibrationFilter& f, const BroadcastOrbits& orbits,
       std::vector<int> all(obs.size());
       std::iota(all.begin(), all.end(), 0);
       f.updateLinearized(compressRows(f.rows(m, keys, gyro.variance), all), INFINITY);
-      return rejected;
+      rows.used = static_cast<int>(obs.size());
+      return rows;
     }
     obs.erase(obs.begin() + worst);
-    ++rejected;
+    ++rows.rejected;
   }
-  return rejected;
+  return rows;
 }
 
 }  // namespace giocal

@@ -63,7 +63,10 @@ EpochOutcome EkfCore::gnss(const ObsEpoch& rover, const ObsEpoch& base, Calibrat
   if (options_.loosely_coupled) return position(rover.t, run);
   const GnssEpochReport rep = options_.single_receiver ? single_.process(filter_, rover)
                                                        : gnss_.process(filter_, rover, base);
+  for (const SatId& sat : single_.takeNewlyBroken())
+    run.warn(brokenSatelliteWarning(sat, options_.single.tdcp.max_slips_in_a_row, rover.t));
   run.count(Counter::kTdcpRows, rep.tdcp_rows);
+  run.count(Counter::kDopplerRows, rep.doppler_rows);
   run.count(Counter::kTdcpSlips, rep.tdcp_slips);
   run.count(Counter::kTdcpScreened, rep.tdcp_screened);
   run.count(Counter::kNumericalFailures, filter_.takeNumericalFailures());

@@ -171,7 +171,10 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
     rep.dd_rows = static_cast<int>(rows.size());
   }
 
-  rep.rejected_rows += updateDoppler(f, orbits_, options_, rover, ant_e, ep.rover_satellites, dt);
+  const DopplerRows doppler =
+      updateDoppler(f, orbits_, options_, rover, ant_e, ep.rover_satellites, dt);
+  rep.rejected_rows += doppler.rejected;
+  rep.doppler_rows = doppler.used;
 
   if (rep.used && options_.ambiguity_resolution) {
     std::vector<DdObservation> phase_rows;

@@ -20,6 +20,7 @@ struct GnssEpochReport {
   int dd_rows = 0, rejected_rows = 0, code_outliers = 0, ambiguity_resets = 0;
   int fixed_ambiguities = 0;
   int tdcp_rows = 0, tdcp_slips = 0, tdcp_screened = 0;  // the single-receiver scheme
+  int doppler_rows = 0;
   double ratio = 0.0;
 };
 

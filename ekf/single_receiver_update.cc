@@ -24,8 +24,8 @@ Eigen::Vector3d antennaAt(const CalibrationFilter& f, const StateKey& p, const S
 double displacementSigma(const StateRegistry& s) {
   const int a = s.offset(state::kP), b = s.offset(kGnssP);
   const Eigen::MatrixXd& P = s.covariance();
-  const Eigen::Matrix3d C = P.block<3, 3>(a, a) + P.block<3, 3>(b, b) - P.block<3, 3>(a, b) -
-                            P.block<3, 3>(b, a);
+  const Eigen::Matrix3d C =
+      P.block<3, 3>(a, a) + P.block<3, 3>(b, b) - P.block<3, 3>(a, b) - P.block<3, 3>(b, a);
   return std::sqrt(std::max(C.trace(), 0.0));
 }
 
@@ -43,11 +43,14 @@ GnssEpochReport SingleReceiverUpdate::process(CalibrationFilter& f, const ObsEpo
   t_last_ = rover.t;
   const Eigen::Vector3d ant_e = antennaAt(f, state::kP, state::kQ);
   TdcpPair pair = builder_.add(rover, ant_e);
-  rep.tdcp_slips = static_cast<int>(pair.left_out.slipped + pair.left_out.half_cycle);
+  rep.tdcp_slips =
+      static_cast<int>(pair.left_out.slipped + pair.left_out.half_cycle + pair.left_out.broken);
   // The clone stands for the pair's first epoch only if it was taken there.
   if (s.has(kGnssP) && !pair.rows.empty() && std::abs(clone_t_ - pair.t0) < 1e-6)
     rep.tdcp_rows = updateTdcp(f, std::move(pair), rep);
-  rep.rejected_rows += updateDoppler(f, orbits_, options_, rover, ant_e, {}, dt);
+  const DopplerRows doppler = updateDoppler(f, orbits_, options_, rover, ant_e, {}, dt);
+  rep.rejected_rows += doppler.rejected;
+  rep.doppler_rows = doppler.used;
   const SppSolution spp = solveSpp(rover, orbits_, SppOptions{});
   const bool positioned = spp.valid && updatePosition(f, spp);
   rep.used = rep.tdcp_rows > 0 || positioned;
@@ -63,9 +66,9 @@ GnssEpochReport SingleReceiverUpdate::process(CalibrationFilter& f, const ObsEpo
 
 int SingleReceiverUpdate::updateTdcp(CalibrationFilter& f, TdcpPair pair, GnssEpochReport& rep) {
   StateRegistry& s = f.state();
-  const int screened = screenTdcp(pair, antennaAt(f, kGnssP, kGnssQ),
-                                  antennaAt(f, state::kP, state::kQ), displacementSigma(s),
-                                  options_.single.tdcp_screen_gate);
+  const int screened =
+      screenTdcp(pair, antennaAt(f, kGnssP, kGnssQ), antennaAt(f, state::kP, state::kQ),
+                 displacementSigma(s), options_.single.tdcp_screen_gate);
   rep.tdcp_screened = screened;
   const std::vector<StateKey> keys{kGnssP, kGnssQ, state::kP, state::kQ, state::kPbg};
   while (pair.rows.size() >= 3) {

@@ -19,6 +19,7 @@ class SingleReceiverUpdate {
   /// fixed without a base).
   GnssEpochReport process(CalibrationFilter& filter, const ObsEpoch& rover);
   const TdcpCounts& tdcpCounts() const { return builder_.totals(); }
+  std::vector<SatId> takeNewlyBroken() { return builder_.takeNewlyBroken(); }
 
  private:
   /// The TDCP rows that pass, as one update; returns the rows used.

@@ -317,6 +317,8 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
                                  : !o_.single_receiver && o_.ambiguity_resolution && resolve(cur);
   run_->count(Counter::kDdRows, static_cast<long>(cur.code_rows.size() + cur.phase_rows.size()));
   run_->count(Counter::kTdcpRows, static_cast<long>(cur.tdcp.rows.size()));
+  if (cur.doppler.size() >= 4)
+    run_->count(Counter::kDopplerRows, static_cast<long>(cur.doppler.size()));
   out.recorded = true;
   out.estimate = estimate(cur);
   outputTrajectory(epochs_[epochs_.size() - 2], cur);

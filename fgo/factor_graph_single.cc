@@ -32,7 +32,10 @@ Eigen::Vector3d FactorGraphCore::antennaOf(const FgoEpoch& e) const {
 void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const ObsEpoch& rover) {
   const Eigen::Vector3d ant_e = antennaOf(e);
   e.tdcp = tdcp_.add(rover, ant_e);
-  run_->count(Counter::kTdcpSlips, e.tdcp.left_out.slipped + e.tdcp.left_out.half_cycle);
+  run_->count(Counter::kTdcpSlips,
+              e.tdcp.left_out.slipped + e.tdcp.left_out.half_cycle + e.tdcp.left_out.broken);
+  for (const SatId& sat : tdcp_.takeNewlyBroken())
+    run_->warn(brokenSatelliteWarning(sat, o_.single.tdcp.max_slips_in_a_row, e.t));
   if (e.tdcp.rows.empty() || std::abs(prev.t - e.tdcp.t0) > 1e-6) {
     e.tdcp.rows.clear();
   } else {
@@ -44,10 +47,11 @@ void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const Obs
   const SppSolution spp = solveSpp(rover, orbits_, SppOptions{});
   if (spp.valid) {
     const PositionFix fix = sppFix(spp, e.t, o_.single.position_sigma_min_m);
-    w_.addFactor({std::make_shared<PositionModel>(positionModelOf(frame_, fix, PositionWeighting{})),
-                  {e.p, e.q, kPbg},
-                  fo_.code_huber,
-                  tagged("position", e.k)});
+    w_.addFactor(
+        {std::make_shared<PositionModel>(positionModelOf(frame_, fix, PositionWeighting{})),
+         {e.p, e.q, kPbg},
+         fo_.code_huber,
+         tagged("position", e.k)});
   }
   e.gyro = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                     in_.description.imu_noise.gyro_noise_density)
@@ -70,8 +74,8 @@ void FactorGraphCore::addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev) {
 bool FactorGraphCore::rejectWorstTdcp(FgoEpoch& e, const FgoEpoch& prev) {
   if (e.tdcp.rows.empty()) return false;
   const TdcpModel m(frame_, e.tdcp);
-  const double* params[5] = {w_.value(prev.p).data(), w_.value(prev.q).data(),
-                             w_.value(e.p).data(), w_.value(e.q).data(), w_.value(kPbg).data()};
+  const double* params[5] = {w_.value(prev.p).data(), w_.value(prev.q).data(), w_.value(e.p).data(),
+                             w_.value(e.q).data(), w_.value(kPbg).data()};
   Eigen::VectorXd r;
   m.evaluate(params, r, nullptr);
   const Eigen::VectorXd z = r.cwiseAbs().cwiseQuotient(m.covariance().diagonal().cwiseSqrt());

@@ -1,5 +1,6 @@
 #include "replay/replay.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "common/gnss/spp.h"
 #include "common/io/data_error.h"
 #include "common/io/sensor_logs.h"
+#include "common/io/text.h"
 #include "replay/estimator_factory.h"
 
 namespace giocal {
@@ -87,17 +89,27 @@ Eigen::Vector3d basePosition(const DatasetDescription& d, const ObsHeader& base_
 
 // The single-receiver scheme's local origin: the rover's first single point position within its
 // first 100 epochs (the header's approximate position may be absent or kilometres off).
-Eigen::Vector3d roverStart(const std::string& rover_obs, const std::vector<NavData>& navs) {
+Eigen::Vector3d roverStart(const DatasetDescription& d, const std::vector<NavData>& navs) {
   const BroadcastOrbits orbits(mergeNav(navs));
-  RinexObsReader reader(rover_obs);
+  RinexObsReader reader(d.pathOf(d.rover_obs));
   ObsEpoch e;
+  double t_first = NAN;
+  int covered = 0;
   for (int k = 0; k < 100 && reader.next(e); ++k) {
+    if (std::isnan(t_first)) t_first = e.t;
+    covered += std::any_of(e.sats.begin(), e.sats.end(),
+                           [&](const SatObs& s) { return orbits.select(s.sat, e.t) != nullptr; });
     const SppSolution spp = solveSpp(e, orbits, SppOptions{});
     if (spp.valid) return spp.p_e;
   }
-  throw DataError(rover_obs, 0,
-                  "no single point position in the first 100 epochs (do the navigation files "
-                  "cover the observations?)");
+  if (covered == 0 && !d.nav.empty()) {
+    throw DataError(d.pathOf(d.nav.front()), 0,
+                    "no ephemeris covers the rover's observations at t=" + timeText(t_first) +
+                        " (" + d.pathOf(d.rover_obs) + ")");
+  }
+  throw DataError(d.pathOf(d.rover_obs), 0,
+                  "no single point position in the first 100 epochs (too few satellites with "
+                  "code and an ephemeris)");
 }
 
 // The dataset's unusable conditions (dataset_diagnosis), its files read again (only after a
@@ -149,9 +161,9 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
   std::vector<NavData> navs;
   for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
   // The local frame's origin: the base, else the first solution.
-  const Eigen::Vector3d origin_e = single ? roverStart(need(d.rover_obs), navs)
-                                   : raw    ? basePosition(d, base->header())
-                                            : positions.front().p_e;
+  const Eigen::Vector3d origin_e = single ? roverStart(d, navs)
+                                   : raw  ? basePosition(d, base->header())
+                                          : positions.front().p_e;
   std::unique_ptr<Calibrator> cal =
       makeCalibrator(job.estimator, d, origin_e, job.options, job.fgo_options, sink);
   if (!navs.empty()) cal->addNavigation(mergeNav(navs));
@@ -165,8 +177,8 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
     streams.push_back(
         readerStream<RinexObsReader, ObsEpoch>(rover, [&c](const ObsEpoch& e) { c.addRover(e); }));
     if (base) {
-      streams.push_back(readerStream<RinexObsReader, ObsEpoch>(
-          base, [&c](const ObsEpoch& e) { c.addBase(e); }));
+      streams.push_back(
+          readerStream<RinexObsReader, ObsEpoch>(base, [&c](const ObsEpoch& e) { c.addBase(e); }));
     }
   }
   if (!positions.empty()) {
@@ -182,9 +194,9 @@ CalibrationRun replayFolder(const DatasetFolder& data, const ReplayJob& job, Run
     c.finish();
   } catch (const std::runtime_error& e) {
     // A failed initialization says which condition of the data it met, when one is found.
-    const std::vector<std::string> why =
-        raw && !single ? diagnoseFolder(d, job.options.max_base_offset)
-                       : std::vector<std::string>{};
+    const std::vector<std::string> why = raw && !single
+                                             ? diagnoseFolder(d, job.options.max_base_offset)
+                                             : std::vector<std::string>{};
     if (why.empty()) throw;
     std::string text = std::string(e.what()) + "; the dataset:";
     for (const std::string& w : why) text += " " + w + ";";

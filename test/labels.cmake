@@ -5,6 +5,7 @@
 set(GIOCAL_SLOW_TESTS
   SingleReceiver.BothEstimatorsCalibrateAFieldDriveFromARoverAlone
   SingleReceiver.ARoverWithABaseCalibratesWithItsRoverAloneToo
+  SingleReceiver.WhatTheRoverLacksIsSaidAndTheRunGoesOnWithTheRest
   WarmStart.ASecondDriveFromTheFirstsCalibrationConvergesEarlierAndEndsCloser
   Validate.ACalibrationOfASimulatedDriveIsBetterThanTheGuessInEveryWindow
   DegradedRuns.BothEstimatorsStayConsistentUnderWheelSlipOverTenSeeds
@@ -31,6 +32,7 @@ set(GIOCAL_REAL_TESTS
   Tdcp.TheRowsGradientsAreTheNumericOnes
   Tdcp.ADisplacementThroughAClockStepASlipAndAHalfCycleIsRecovered
   Tdcp.StaticRoversOfTheRealPairsStayPutAsSingleReceivers
+  Tdcp.ASatelliteThatSlipsAtEveryEpochIsNamedOnceAndLeftOut
   TdcpWalk.DisplacementsPerEpochAgreeWithRtklibsFixedSolution
   Rtk.MixedReceivers5kmFixesEveryEpoch
   BagImport.GnssCommMessagesRoundTripARealReceiversObservations

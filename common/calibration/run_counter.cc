@@ -18,6 +18,8 @@ const char* counterName(Counter c) {
       return "gnss_epochs_unused";
     case Counter::kCodeOutliers:
       return "code_outliers";
+    case Counter::kDopplerRows:
+      return "doppler_rows";
     case Counter::kTdcpRows:
       return "tdcp_rows";
     case Counter::kTdcpSlips:

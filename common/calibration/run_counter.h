@@ -11,6 +11,7 @@ enum class Counter {
   kGnssRowsRejected,     // DD rows rejected by a gate or after a solve
   kGnssEpochsUnused,     // GNSS epochs (LC: position fixes) that updated nothing
   kCodeOutliers,         // pseudo-ranges flagged by the Doppler-predicted change
+  kDopplerRows,          // Doppler rows used
   kTdcpRows,             // single receiver: time-differenced phase rows used
   kTdcpSlips,            // single receiver: phases left out of a pair (slip or half cycle)
   kTdcpScreened,         // single receiver: phases off the predicted displacement, left out

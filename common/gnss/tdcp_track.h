@@ -17,10 +17,14 @@ namespace giocal {
 class TdcpTrack {
  public:
   TdcpTrack(const BroadcastOrbits& orbits, const TdcpOptions& options, double spp_sigma_min)
-      : orbits_(orbits), builder_(orbits, options), spp_sigma_min_(spp_sigma_min) {}
+      : orbits_(orbits),
+        builder_(orbits, options),
+        spp_sigma_min_(spp_sigma_min),
+        max_step_s_(options.max_interval_s) {}
   /// The track's point at the epoch, nullopt without a single point position. Its cov_enu is the
   /// uncertainty of its displacement from the start of its stretch (the TDCP steps summed); a
-  /// step without a displacement starts a new stretch at the single point position, whose
+  /// step without a phase displacement is bridged by the Doppler velocities at both ends
+  /// (decimetres), and without those starts a new stretch at the single point position, whose
   /// sigma (at least spp_sigma_min) it then carries.
   std::optional<PositionFix> add(const ObsEpoch& epoch);
 
@@ -28,7 +32,9 @@ class TdcpTrack {
   const BroadcastOrbits& orbits_;
   TdcpBuilder builder_;
   double spp_sigma_min_;
+  double max_step_s_;
   std::optional<PositionFix> last_;
+  std::optional<Eigen::Vector3d> last_velocity_;     // the Doppler velocity at last_ (ECEF)
   Eigen::Matrix3d cov_e_ = Eigen::Matrix3d::Zero();  // summed step covariance, ECEF
 };
 

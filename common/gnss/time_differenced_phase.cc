@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "common/gnss/atmosphere.h"
+#include "common/io/text.h"
 
 namespace giocal {
 
@@ -45,6 +46,7 @@ void TdcpCounts::add(const TdcpCounts& o) {
   gaps += o.gaps;
   clock_jumps += o.clock_jumps;
   screened += o.screened;
+  broken += o.broken;
 }
 
 double tdcpObserved(const TdcpPair& pair, const TdcpRow& row) {
@@ -145,6 +147,18 @@ int screenTdcp(TdcpPair& pair, const Eigen::Vector3d& p0_e, const Eigen::Vector3
   return dropped;
 }
 
+std::string brokenSatelliteWarning(const SatId& sat, int slips_in_a_row, double t) {
+  return "satellite " + sat.str() + ": its carrier phase slipped in " +
+         std::to_string(slips_in_a_row) + " epochs in a row up to t=" + timeText(t) +
+         "; left out of the time-differenced phase from then on (counter tdcp_slips)";
+}
+
+std::vector<SatId> TdcpBuilder::takeNewlyBroken() {
+  std::vector<SatId> out;
+  out.swap(newly_broken_);
+  return out;
+}
+
 TdcpBuilder::TdcpBuilder(const BroadcastOrbits& orbits, const TdcpOptions& options)
     : orbits_(orbits), options_(options), slips_(options.slips) {}
 
@@ -188,6 +202,10 @@ TdcpPair TdcpBuilder::add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e)
       ++out.left_out.low;
       continue;
     }
+    if (broken_.count(now.sat)) {
+      ++out.left_out.broken;
+      continue;
+    }
     for (char band : ddBands(now.sat.sys, options_.frequencies)) {
       const SignalObs* s0 = nullptr;
       const SignalObs* s1 = sameSignal(now, *before, band, &s0);
@@ -223,6 +241,15 @@ TdcpPair TdcpBuilder::add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e)
     if (std::abs(*mid) > kClockJump_m) ++out.left_out.clock_jumps;
   }
   out.left_out.alone += formRows(out);
+  // Satellites that slipped in this pair, and in every one before it up to the limit.
+  for (const SatObs& now : paired ? epoch.sats : none) {
+    const bool slipped =
+        std::find(out.slipped.begin(), out.slipped.end(), now.sat) != out.slipped.end();
+    int& run = slips_in_a_row_[now.sat];
+    run = slipped ? run + 1 : 0;
+    if (run >= options_.max_slips_in_a_row && broken_.insert(now.sat).second)
+      newly_broken_.push_back(now.sat);
+  }
   totals_.add(out.left_out);
   previous_ = epoch;
   previous_e_ = rover_e;

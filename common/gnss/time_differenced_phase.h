@@ -5,6 +5,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,9 @@ struct TdcpOptions {
   // little between epochs a second apart, so this is the thermal noise plus a margin.
   ElevationNoise phase{0.003};
   double max_interval_s = 1.5;  // a longer step between epochs starts again
+  // A satellite whose phase slips in this many pairs in a row is broken (a receiver that cannot
+  // track it, a multipath trap): left out from then on, and named once.
+  int max_slips_in_a_row = 10;
   CycleSlipOptions slips;
 };
 
@@ -58,6 +63,7 @@ struct TdcpCounts {
   long long gaps = 0;               // epoch steps longer than max_interval_s (no pair formed)
   long long clock_jumps = 0;        // receiver clock steps seen in the code (cancelled by rows)
   long long screened = 0;           // disagreed with the displacement the IMU and odometer predict
+  long long broken = 0;             // phases of satellites left out for slipping in every pair
   void add(const TdcpCounts& o);
 };
 
@@ -92,6 +98,9 @@ int formRows(TdcpPair& pair);
 int screenTdcp(TdcpPair& pair, const Eigen::Vector3d& p0_e, const Eigen::Vector3d& p1_e,
                double predicted_sigma_m, double gate);
 
+/// The warning naming a satellite left out for good (TdcpBuilder::takeNewlyBroken) at time t.
+std::string brokenSatelliteWarning(const SatId& sat, int slips_in_a_row, double t);
+
 /// Forms the pair of each epoch with the one before it.
 class TdcpBuilder {
  public:
@@ -101,6 +110,8 @@ class TdcpBuilder {
   /// 10 m changes a row by about 1 mm over one second).
   TdcpPair add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e);
   const TdcpCounts& totals() const { return totals_; }
+  /// Satellites left out for good (max_slips_in_a_row) since the last call, to be named once.
+  std::vector<SatId> takeNewlyBroken();
 
  private:
   const BroadcastOrbits& orbits_;
@@ -110,6 +121,9 @@ class TdcpBuilder {
   Eigen::Vector3d previous_e_ = Eigen::Vector3d::Zero();
   bool has_previous_ = false;
   TdcpCounts totals_;
+  std::map<SatId, int> slips_in_a_row_;
+  std::set<SatId> broken_;
+  std::vector<SatId> newly_broken_;
 };
 
 }  // namespace giocal

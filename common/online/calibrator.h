@@ -20,13 +20,13 @@
 #include <string>
 #include <vector>
 
-#include "common/gnss/tdcp_track.h"
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/calibration_run.h"
 #include "common/calibration/initial_state.h"
 #include "common/calibration/odometer_delay.h"
 #include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/tdcp_track.h"
 #include "common/online/busy_timer.h"
 #include "common/online/convergence.h"
 #include "common/online/estimator_core.h"
@@ -133,6 +133,8 @@ class Calibrator {
   void restartAfterGap(double t0, double t1);
   /// A warning when more than a fifth of the GNSS epochs (LC: fixes) updated nothing.
   void warnAboutUnusedGnss();
+  /// The single-receiver scheme: a kind of GNSS row the run never had is named.
+  void warnAboutSingleReceiverRows();
   const ObsEpoch* nearestBase(double t) const;
   double rel(double t) const { return t - t_first_; }
 
@@ -147,7 +149,7 @@ class Calibrator {
   CalibrationInputs buf_;  // buffered samples and ephemerides (bounded)
   std::unique_ptr<BroadcastOrbits> orbits_;
   std::unique_ptr<TdcpTrack> track_;  // the single-receiver scheme's track for the initial state
-  std::deque<ObsEpoch> rover_;  // rover epochs not yet processed
+  std::deque<ObsEpoch> rover_;        // rover epochs not yet processed
   std::unique_ptr<EstimatorCore> core_;
   ConvergenceMonitor convergence_;
   std::optional<CalibrationEstimate> core_estimate_;  // the present core's previous estimate

@@ -58,6 +58,7 @@ void Calibrator::finish() {
   const bool position_rows = positionsOnly() || options_.loosely_coupled;
   for (const std::string& w : rejectionShareWarnings(run_, position_rows)) run_.warn(w);
   warnAboutUnusedGnss();
+  if (options_.single_receiver) warnAboutSingleReceiverRows();
   if (const long n = run_.counter(Counter::kNumericalFailures); n > 0) {
     run_.warn(std::to_string(n) +
               " updates, solves or ambiguity searches failed numerically (counter "
@@ -117,6 +118,25 @@ void Calibrator::finish() {
   // checking fixes against a truth file) is the caller's, reported apart.
   run_.timing["outputs_s"] = sink_s_;
   run_.wall_time_s = busy_s_ - sink_s_;
+}
+
+void Calibrator::warnAboutSingleReceiverRows() {
+  // One receiver runs with what its file has; a kind of row it never had is said, with what the
+  // calibration then rests on.
+  const long tdcp = run_.counter(Counter::kTdcpRows), doppler = run_.counter(Counter::kDopplerRows);
+  if (run_.gnss_epochs == 0) return;
+  if (tdcp == 0) {
+    run_.warn(
+        std::string("no time-differenced carrier phase rows (the rover file has no usable "
+                    "carrier phase, or it slipped at every epoch): the calibration rests on ") +
+        (doppler > 0 ? "Doppler and single point positions" : "single point positions") +
+        ", metres-coarse");
+  }
+  if (doppler == 0) {
+    run_.warn(
+        "no Doppler rows (the rover file has no Doppler, or too few satellites): the "
+        "velocity comes from the carrier phase and the single point positions alone");
+  }
 }
 
 }  // namespace giocal

@@ -6,8 +6,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_nav_writer.h"
+#include "common/gnss/rinex_obs.h"
+#include "common/gnss/rinex_obs_writer.h"
 #include "field_laps.h"
 #include "run_giocal.h"
 #include "temp_dir.h"
@@ -92,11 +97,70 @@ TEST(SingleReceiver, ARoverWithABaseCalibratesWithItsRoverAloneToo) {
   EXPECT_GT(rtk["fix_rate"].get<double>(), 0.9);
   EXPECT_EQ(single["fix_rate"].get<double>(), 0.0);
   // The commands without the scheme yet refuse --gnss single with one line, not ignore it.
-  const test::GiocalResult v = test::runGiocal("validate --data " + dir.file("d") + " --run " +
-                                               dir.file("single") + " --gnss single --quiet --out " +
-                                               dir.file("v"));
+  const test::GiocalResult v =
+      test::runGiocal("validate --data " + dir.file("d") + " --run " + dir.file("single") +
+                      " --gnss single --quiet --out " + dir.file("v"));
   EXPECT_EQ(v.code, 2) << v.out;
   EXPECT_NE(v.out.find("--gnss single: only calibrate and compare"), std::string::npos) << v.out;
+}
+
+// The rover file of `from` written to `to` (a copy of the dataset) with `strip` applied.
+void rewriteRover(const std::string& from, const std::string& to,
+                  const std::function<void(SignalObs&)>& strip) {
+  std::filesystem::copy(from, to, std::filesystem::copy_options::recursive);
+  ObsData d = readRinexObs(from + "/rover.obs");
+  for (ObsEpoch& e : d.epochs) {
+    for (SatObs& s : e.sats) {
+      for (SignalObs& g : s.signals) strip(g);
+    }
+  }
+  RinexObsHeader h;
+  h.obs_types = d.header.obs_types;
+  h.approx_position = d.header.approx_position;
+  std::filesystem::remove(to + "/rover.obs");
+  writeRinexObs(to + "/rover.obs", h, d.epochs);
+}
+
+TEST(SingleReceiver, WhatTheRoverLacksIsSaidAndTheRunGoesOnWithTheRest) {
+  test::TempDir dir;
+  const std::string preset = test::fieldPresetWithLaps(dir, 1);
+  const std::string alone = dir.file("alone");
+  ASSERT_EQ(
+      test::runGiocal("simulate --config " + preset + " --no-base --seed 5203 --out " + alone).code,
+      0);
+  const auto warnings = [&](const std::string& data) {
+    const test::GiocalResult r =
+        test::runGiocal("calibrate --data " + data + " --quiet --out " + data + "_cal");
+    EXPECT_NE(r.code, 1) << r.out;                      // it runs (ok or suspect), it does not stop
+    const nlohmann::json s = summaryOf(data + "_cal");  // held: the loop reads into it
+    std::string all;
+    for (const auto& w : s["warnings"]) all += w.get<std::string>() + "\n";
+    return all;
+  };
+  // No carrier phase: Doppler and single point positions, said.
+  rewriteRover(alone, dir.file("no_phase"), [](SignalObs& g) { g.L = NAN; });
+  EXPECT_NE(warnings(dir.file("no_phase")).find("no time-differenced carrier phase rows"),
+            std::string::npos);
+  // No Doppler: said.
+  rewriteRover(alone, dir.file("no_doppler"), [](SignalObs& g) { g.D = NAN; });
+  const std::string w = warnings(dir.file("no_doppler"));
+  EXPECT_NE(w.find("no Doppler rows"), std::string::npos) << w;
+  EXPECT_EQ(w.find("no time-differenced"), std::string::npos) << w;
+  // Ephemerides of another day: one line naming the navigation file and the time.
+  std::filesystem::copy(alone, dir.file("other_day"), std::filesystem::copy_options::recursive);
+  NavData nav = readRinexNav(alone + "/nav.rnx");
+  for (Ephemeris& e : nav.ephemerides) {
+    e.toe += 3 * 86400.0;
+    e.toc += 3 * 86400.0;
+  }
+  std::filesystem::remove(dir.file("other_day") + "/nav.rnx");
+  writeRinexNav(dir.file("other_day") + "/nav.rnx", nav, "giocal test");
+  const test::GiocalResult r = test::runGiocal("calibrate --data " + dir.file("other_day") +
+                                               " --quiet --out " + dir.file("other_day_cal"));
+  EXPECT_EQ(r.code, 1) << r.out;
+  EXPECT_NE(r.out.find("nav.rnx: no ephemeris covers the rover's observations at t="),
+            std::string::npos)
+      << r.out;
 }
 
 }  // namespace

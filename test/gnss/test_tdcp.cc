@@ -212,6 +212,34 @@ StaticFigures staticRover(const std::string& obs, const std::string& nav, TdcpOp
   return f;
 }
 
+TEST(Tdcp, ASatelliteThatSlipsAtEveryEpochIsNamedOnceAndLeftOut) {
+  const BroadcastOrbits orbits(readRinexNav(kReal + "mosaic-static-nagoya/base.nav"));
+  const ObsData real = readRinexObs(kReal + "mosaic-static-nagoya/rover.obs");
+  std::vector<SatId> sats;
+  for (const SatObs& s : real.epochs[0].sats) {
+    if (s.sat.sys == GnssSystem::kGps) sats.push_back(s.sat);
+  }
+  const Eigen::Vector3d p0 = real.header.approx_position;
+  TdcpBuilder builder(orbits);
+  std::vector<SatId> named;
+  long long broken_in_last_pair = 0;
+  for (int k = 0; k < 15; ++k) {
+    ObsEpoch e = syntheticEpoch(orbits, sats, real.epochs[0].t + k, p0, 1e-4, 1e-4);
+    ASSERT_GT(e.sats.size(), 5u);
+    signalOf(e, 0, '1').lli = 1;  // the first satellite's L1 loses lock at every epoch
+    const TdcpPair pair = builder.add(e, p0);
+    for (const SatId& s : builder.takeNewlyBroken()) named.push_back(s);
+    broken_in_last_pair = pair.left_out.broken;
+    if (k > 0) {
+      EXPECT_FALSE(pair.rows.empty());  // the others go on
+    }
+  }
+  ASSERT_EQ(named.size(), 1u);
+  EXPECT_EQ(named[0], sats[0]);
+  EXPECT_EQ(broken_in_last_pair, 1);  // left out before its bands are looked at
+  EXPECT_NE(brokenSatelliteWarning(named[0], 10, 0.0).find(sats[0].str()), std::string::npos);
+}
+
 TEST(Tdcp, StaticRoversOfTheRealPairsStayPutAsSingleReceivers) {
   // 1 s epochs: a few millimetres per epoch (measured 3.9 and 4.0 mm p95).
   const StaticFigures mosaic = staticRover(kReal + "mosaic-static-nagoya/rover.obs",
