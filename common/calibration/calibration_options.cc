@@ -63,6 +63,18 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.lc.sigma_scale = y.numberOr(s + "lc.sigma_scale", o.lc.sigma_scale, 1e-3, 1e3);
   o.lc.use_height = flag("lc.use_height", o.lc.use_height);
   o.lc.learn_heights = flag("lc.learn_heights", o.lc.learn_heights);
+  const std::string single = s + "single.";
+  TdcpOptions& td = o.single.tdcp;
+  td.max_interval_s = y.numberOr(single + "max_interval_s", td.max_interval_s, 0.01, 60.0);
+  td.phase.sigma_zenith = y.numberOr(single + "phase_sigma", td.phase.sigma_zenith, 1e-5, 1.0);
+  td.elevation_mask_deg =
+      y.numberOr(single + "elevation_mask_deg", td.elevation_mask_deg, 0.0, 60.0);
+  td.max_slips_in_a_row =
+      static_cast<int>(y.numberOr(single + "max_slips_in_a_row", td.max_slips_in_a_row, 2, 1e6));
+  o.single.position_sigma_min_m =
+      y.numberOr(single + "position_sigma_min", o.single.position_sigma_min_m, 0.01, 1e3);
+  o.single.tdcp_screen_gate =
+      y.numberOr(single + "screen_gate", o.single.tdcp_screen_gate, 1.0, 1e3);
   const std::string i = s + "init.";
   o.init.static_speed = y.numberOr(i + "static_speed", o.init.static_speed, 0.0, 1.0);
   o.init.min_static_s = y.numberOr(i + "min_static_s", o.init.min_static_s, 0.1, 1e3);

@@ -115,7 +115,7 @@ struct CalibrationOptions {
   PositionWeighting lc;              // calibration.lc.sigma_scale, .use_height, .learn_heights
   // One receiver and no base (calibrate --gnss single): time-differenced carrier phase between
   // consecutive rover epochs, Doppler, and single point positions with a loose weight. Not a
-  // YAML key; `single` holds its settings.
+  // YAML key (the command line's); `single` holds its settings (calibration.single.*).
   bool single_receiver = false;
   SingleReceiverOptions single;
   double clock_drift_noise = 0.1;    // receiver clock drift random walk [m/s/sqrt(s)]
