@@ -8,7 +8,11 @@
 # scheme (mean over seeds), the initial guess, and the true calibration as the floor; and
 # "draw": the truth plus an error drawn from TC-AR's own sigmas at that scene
 # (bench/draw_calibration.py), what an estimator as precise as TC-AR claims would give.
-# Usage: bench/dead_reckoning.sh [--gyro-tilt] [--shard k/n] [--results <file.csv>] [seed...]
+# Usage: bench/dead_reckoning.sh [--gyro-tilt] [--single] [--shard k/n] [--results <file.csv>]
+#          [seed...]
+#          (--single: also the single-receiver scheme, --gnss single on the same calibration
+#          drive simulated as a rover alone, simulate --no-base; "SINGLE" rows, and its MAX
+#          against TC-AR's, target <= 1.2)
 #          (--gyro-tilt: every calibration also estimates the gyro's tilt against the
 #          accelerometer, calibration.estimate_gyro_tilt, and dead reckoning applies it)
 #          (about 5 minutes per seed on an idle machine; --shard: only the k-th of every n seeds of
@@ -20,10 +24,11 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 giocal="${GIOCAL_BIN:-$root/build/apps/giocal}"  # GIOCAL_BIN: another build
-shard=1 shards=1 keep="" merge=() tilt=0
+shard=1 shards=1 keep="" merge=() tilt=0 single=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --gyro-tilt) tilt=1; shift ;;
+    --single) single=1; shift ;;
     --shard) IFS=/ read -r shard shards <<< "$2"; shift 2 ;;
     --results) keep="$2"; shift 2 ;;
     --merge) shift; merge=("$@"); break ;;
@@ -65,6 +70,9 @@ for seed in "${seeds[@]}"; do
     --seed "$seed" > /dev/null
   "$giocal" simulate --config "$root/bench/field_test_drive.yaml" --out "$work/test_$seed" \
     --seed "$((seed + 1000))" > /dev/null
+  # The same calibration drive as a rover alone (the motion sensors draw alike): one receiver.
+  [ "$single" = 1 ] && "$giocal" simulate --config "$root/config/sim/field.yaml" --no-base \
+    --out "$work/alone_$seed" --seed "$seed" > /dev/null
   "$giocal" rtk --rover "$work/cal_$seed/rover.obs" --base "$work/cal_$seed/base.obs" \
     --nav "$work/cal_$seed/nav.rnx" --out "$work/cal_$seed.pos" > /dev/null
   # The truth and the guess do not depend on the scene: run once, listed under every scene.
@@ -97,6 +105,16 @@ for seed in "${seeds[@]}"; do
       done
     done
   done
+  for est in ekf fgo; do
+    [ "$single" = 1 ] || break
+    "$giocal" calibrate --data "$work/alone_$seed" --estimator "$est" --config "$work/ar.yaml" \
+      --out "$work/run" --overwrite > /dev/null
+    for scene in "${scene_ends[@]}"; do
+      if [ "$scene" = end ]; then source="$work/run/summary.json"
+      else source="$work/run/calibration.csv@$scene"; fi
+      dr "$seed" "SINGLE-$est" "$scene" "$source"
+    done
+  done
   echo "seed $seed done" >&2
 done
 if [ -n "$keep" ]; then cp "$results" "$keep.tmp" && mv "$keep.tmp" "$keep"; fi
@@ -111,7 +129,8 @@ schemes = ["guess", "LC-ekf", "TC-WAR-ekf", "TC-AR-ekf", "LC-fgo", "TC-WAR-fgo",
 v = collections.defaultdict(list)
 for r in rows:
     v[(r["scheme"], r["scene"])].append((float(r["max"]), float(r["rmse"])))
-schemes += [s for s in ["draw-ekf", "draw-fgo"] if any(k[0] == s for k in v)]
+schemes += [s for s in ["draw-ekf", "draw-fgo", "SINGLE-ekf", "SINGLE-fgo"]
+            if any(k[0] == s for k in v)]
 print("dead reckoning of the test drive, 1000 s without GNSS; horizontal MAX / RMSE [m], mean of "
       "seeds %s; calibration taken at the end of each scene of the calibration drive" % " ".join(seeds))
 print("%-12s" % "scheme" + "".join("%22s" % names[s] for s in scenes))
@@ -135,6 +154,12 @@ for est in ["ekf", "fgo"]:  # the truth with errors of TC-AR's sigmas, when the 
     print("%-12s" % ("draw-" + est) + "".join(
         "%22.2f" % (sum(a for a, _ in v[("draw-" + est, s)]) / sum(a for a, _ in v[("truth", s)]))
         for s in scenes))
+for est in ["ekf", "fgo"]:  # one receiver against RTK, when the rows have it
+    if not any(k[0] == "SINGLE-" + est for k in v):
+        continue
+    print("%-12s" % ("SINGLE/TC-AR-" + est)[:12] + "".join(
+        "%22.2f" % (sum(a for a, _ in v[("SINGLE-" + est, s)]) /
+                    sum(a for a, _ in v[("TC-AR-" + est, s)])) for s in scenes))
 print("TC-AR better than LC and TC-WAR (MAX), per scene:")
 for est in ["ekf", "fgo"]:
     cells = []
