@@ -48,6 +48,11 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   dr.options.loosely_coupled = !job.positions.empty();
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   CalibrationInputs in = loadCalibrationInputs(data, job.positions);
+  // One receiver (asked, or a dataset without a base): its own track starts the aided part.
+  const DatasetDescription& d = data.description;
+  dr.options.single_receiver =
+      job.single || (job.positions.empty() && !d.rover_obs.empty() && d.base_obs.empty());
+  if (dr.options.single_receiver) addSingleReceiverTrack(in, dr.options.single);
   checkStop(job.stop);
   // The GNSS-aided part weighs the solutions' heights as calibrate did.
   if (dr.options.loosely_coupled) applyFixHeights(measureFixHeights(in), dr.options);
@@ -96,7 +101,9 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
                                   source.gyro_tilt.y() * kRadToDeg};
   }
   j["reference"] = reference_path;
-  j["gnss_before_start"] = job.positions.empty() ? "tc" : "lc: " + job.positions;
+  j["gnss_before_start"] = !job.positions.empty()     ? "lc: " + job.positions
+                           : dr.options.single_receiver ? std::string("single")
+                                                        : std::string("tc");
   j["start_s"] = job.start_s;
   j["t_start"] = r.t_start;
   j["duration_s"] = r.t_end - r.t_start;

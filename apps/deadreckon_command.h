@@ -13,6 +13,7 @@ namespace giocal {
 struct DeadReckonJob {
   std::string data, calibration, reference, config, out;  // reference empty: the dataset's truth
   std::string positions;  // --gnss lc --pos: GNSS aiding before the start from these solutions
+  bool single = false;    // --gnss single: one receiver's aiding (also without a base)
   double start_s = 100.0, duration_s = 1000.0;
   bool overwrite = false;
   bool quiet = false;  // no progress line

@@ -146,13 +146,13 @@ void addGnssOptions(po::options_description& opts) {
       "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
 }
 
-/// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Only calibrate and
-/// compare take --gnss single so far.
+/// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Only calibrate,
+/// compare and deadreckon take --gnss single so far.
 std::string lcPositions(const po::variables_map& vm, bool single_allowed = false) {
   const std::string gnss = vm["gnss"].as<std::string>();
   if (gnss == "single" && !single_allowed)
-    throw po::error("--gnss single: only calibrate and compare have the single-receiver scheme "
-                    "so far");
+    throw po::error("--gnss single: only calibrate, compare and deadreckon have the "
+                    "single-receiver scheme so far");
   if (gnss != "tc" && gnss != "lc" && gnss != "single")
     throw po::error("--gnss must be tc, lc or single, not '" + gnss + "'");
   if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
@@ -308,7 +308,8 @@ int runDeadReckonCommand(int argc, char** argv) {
   job.start_s = vm["start"].as<double>();
   job.duration_s = vm["duration"].as<double>();
   job.reference = vm["reference"].as<std::string>();
-  job.positions = lcPositions(vm);
+  job.positions = lcPositions(vm, true);
+  job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();

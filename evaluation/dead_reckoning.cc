@@ -10,6 +10,7 @@
 #include "common/math/rotation.h"
 #include "ekf/calibration_filter.h"
 #include "ekf/gnss_update.h"
+#include "ekf/single_receiver_update.h"
 
 namespace giocal {
 namespace {
@@ -63,6 +64,7 @@ DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory&
   CalibrationFilter filter(options, description, in.imu, *init);
   const BroadcastOrbits orbits(in.nav);
   GnssUpdate gnss(orbits, in.base_e, options);
+  SingleReceiverUpdate single(orbits, options);
   BaseEpochMatcher base(in.base.epochs, options.max_base_offset);
   size_t k = 0, j = 0;
   // GNSS-aided up to the start.
@@ -83,8 +85,10 @@ DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory&
         if (fix) filter.updatePosition(*fix);
         continue;
       }
-      const ObsEpoch* b = base.nearest(rover.t);
-      if (b && gnss.process(filter, rover, *b).diverged) {
+      const ObsEpoch* b = options.single_receiver ? &rover : base.nearest(rover.t);
+      if (b && (options.single_receiver ? single.process(filter, rover)
+                                        : gnss.process(filter, rover, *b))
+                   .diverged) {
         throw std::runtime_error("dead reckoning: the GNSS-aided filter diverged at t=" +
                                  timeText(rover.t) + " before the start");
       }

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 
 #include "common/gnss/rinex_obs.h"
+#include "common/gnss/tdcp_track.h"
 #include "common/io/data_error.h"
 #include "common/io/sensor_logs.h"
 #include "common/odometer/gyro_yaw_rate.h"
@@ -59,6 +61,20 @@ CalibrationInputs loadCalibrationInputs(const DatasetFolder& data, const std::st
     }
     return in;
   }
+  if (!d.rover_obs.empty() && d.base_obs.empty()) {
+    // A rover alone (the single-receiver scheme): the origin is its first single point position,
+    // the track for the initial heading is the caller's (singleReceiverTrack).
+    in.rover = readRinexObs(need(d.rover_obs));
+    in.warnings.insert(in.warnings.end(), in.rover.warnings.begin(), in.rover.warnings.end());
+    if (in.rover.epochs.empty()) throw DataError(d.pathOf(d.rover_obs), 0, "no epochs");
+    std::vector<NavData> navs;
+    for (const std::string& n : d.nav) navs.push_back(readRinexNav(need(n)));
+    in.nav = mergeNav(navs);
+    if (in.dataDuration() <= 0.0) {
+      throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
+    }
+    return in;
+  }
   requireRawGnss(d);
   in.rover = readRinexObs(need(d.rover_obs));
   in.base = readRinexObs(need(d.base_obs));
@@ -80,6 +96,20 @@ CalibrationInputs loadCalibrationInputs(const DatasetFolder& data, const std::st
     throw DataError(d.pathOf(d.imu), 0, "the IMU log and the rover observations do not overlap");
   }
   return in;
+}
+
+void addSingleReceiverTrack(CalibrationInputs& in, const SingleReceiverOptions& options) {
+  const BroadcastOrbits orbits(in.nav);
+  TdcpTrack track(orbits, options.tdcp, options.position_sigma_min_m);
+  in.positions.clear();
+  for (const ObsEpoch& e : in.rover.epochs) {
+    if (const std::optional<PositionFix> fix = track.add(e)) in.positions.push_back(*fix);
+  }
+  if (in.positions.empty()) {
+    throw std::runtime_error("no single point position of the rover (do the navigation files "
+                             "cover its observations?)");
+  }
+  in.base_e = in.positions.front().p_e;
 }
 
 }  // namespace giocal

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/calibration/calibration_options.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_nav.h"
@@ -42,5 +43,10 @@ CalibrationInputs loadCalibrationInputs(const DatasetFolder& data,
 /// The same for a folder not yet opened (opens it).
 CalibrationInputs loadCalibrationInputs(const std::string& folder,
                                         const std::string& positions = "");
+
+/// A rover alone (no base): its track of single point positions joined by time-differenced phase
+/// into `in.positions` (what the initial heading is measured on), and the local origin at its
+/// start. Throws when no epoch has a single point position.
+void addSingleReceiverTrack(CalibrationInputs& in, const SingleReceiverOptions& options);
 
 }  // namespace giocal

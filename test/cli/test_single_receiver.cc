@@ -79,6 +79,16 @@ TEST(SingleReceiver, BothEstimatorsCalibrateAFieldDriveFromARoverAlone) {
   const nlohmann::json f = summaryOf(dir.file("fgo"));
   expectLikeRtk(f, summaryOf(dir.file("rtk")), "rover alone, factor graph");
   EXPECT_GT(f["counters"]["tdcp_rows"].get<long>(), 1000);
+  // Dead reckoning, aided from the rover alone before a 300 s outage: the calibration against
+  // the guess.
+  for (const char* source : {"ekf/summary.json", "guess"}) {
+    const std::string from = std::string(source) == "guess" ? "guess" : dir.file(source);
+    run("deadreckon --data " + dir.file("alone") + " --calibration " + from +
+        " --start 100 --duration 300 --out " + dir.file(std::string("dr_") + source[0]));
+  }
+  const nlohmann::json dr = summaryOf(dir.file("dr_e")), guess = summaryOf(dir.file("dr_g"));
+  EXPECT_EQ(dr["gnss_before_start"], "single");
+  EXPECT_LT(dr["horizontal_max_m"].get<double>(), 0.5 * guess["horizontal_max_m"].get<double>());
 }
 
 TEST(SingleReceiver, ARoverWithABaseCalibratesWithItsRoverAloneToo) {
@@ -101,7 +111,7 @@ TEST(SingleReceiver, ARoverWithABaseCalibratesWithItsRoverAloneToo) {
       test::runGiocal("validate --data " + dir.file("d") + " --run " + dir.file("single") +
                       " --gnss single --quiet --out " + dir.file("v"));
   EXPECT_EQ(v.code, 2) << v.out;
-  EXPECT_NE(v.out.find("--gnss single: only calibrate and compare"), std::string::npos) << v.out;
+  EXPECT_NE(v.out.find("--gnss single: only calibrate, compare and deadreckon"), std::string::npos) << v.out;
 }
 
 // The rover file of `from` written to `to` (a copy of the dataset) with `strip` applied.
