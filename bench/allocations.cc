@@ -1,0 +1,123 @@
+// Heap allocations of the Calibrator in the steady state, per IMU sample, per odometer sample
+// and per GNSS epoch: global operator new counted around each add*() call, fed in time order from
+// a simulated drive (without truth.csv: the live check against a truth is evaluation). A call
+// during which a rover epoch left the calibrator's queue did that epoch's work and counts for the
+// epoch; the others count for their sample. The first third of the drive (initialization, the
+// first windows) is left out. Prints the mean and the largest count per kind, per estimator.
+// Usage: giocal_allocations [--preset config/sim/paper.yaml] [--seed N]
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <string>
+
+#include "common/calibration/calibration_inputs.h"
+#include "replay/estimator_factory.h"
+#include "sim/simulator.h"
+
+namespace {
+std::atomic<long long> g_allocations{0};
+}  // namespace
+
+// Every allocation of the process goes through these (the bench's own included, which is why
+// only the calls' differences are read).
+void* operator new(std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) {
+  ++g_allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace giocal;
+
+namespace {
+
+struct Tally {
+  long long calls = 0, allocations = 0, worst = 0;
+  void add(long long n) {
+    ++calls;
+    allocations += n;
+    worst = std::max(worst, n);
+  }
+  double mean() const {
+    return calls ? static_cast<double>(allocations) / static_cast<double>(calls) : 0.0;
+  }
+};
+
+struct Tallies {
+  Tally imu, odom, epoch;
+};
+
+Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from) {
+  Tallies t;
+  size_t ko = 0, kr = 0, kb = 0;
+  const auto counted = [&](Tally& own, double at, const auto& call) {
+    const size_t pending = c.health().pending_epochs;  // health() allocates: outside the count
+    const long long before = g_allocations.load();
+    call();
+    const long long n = g_allocations.load() - before;
+    if (at < steady_from) return;
+    (c.health().pending_epochs < pending ? t.epoch : own).add(n);
+  };
+  Tally ignored;
+  for (const ImuSample& s : in.imu) {
+    while (ko < in.odom.size() && in.odom[ko].t <= s.t) {
+      const OdomSample& o = in.odom[ko++];
+      counted(t.odom, o.t, [&] { c.addOdometer(o); });
+    }
+    while (kr < in.rover.epochs.size() && in.rover.epochs[kr].t <= s.t) {
+      const ObsEpoch& e = in.rover.epochs[kr++];
+      counted(ignored, e.t, [&] { c.addRover(e); });
+    }
+    while (kb < in.base.epochs.size() && in.base.epochs[kb].t <= s.t) {
+      const ObsEpoch& e = in.base.epochs[kb++];
+      counted(ignored, e.t, [&] { c.addBase(e); });
+    }
+    counted(t.imu, s.t, [&] { c.addImu(s); });
+  }
+  return t;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
+  std::uint64_t seed = 1;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--preset")) preset = argv[i + 1];
+    if (!std::strcmp(argv[i], "--seed")) seed = std::stoull(argv[i + 1]);
+  }
+  const std::string dir = "/tmp/giocal_allocations_" + std::to_string(seed);
+  sim::writeDataset(sim::simulate(sim::readSimConfig(preset), seed), dir);
+  CalibrationInputs in = loadCalibrationInputs(dir);
+  in.description.truth.clear();  // no live check against a truth: robot work only
+  const double t0 = in.imu.front().t, t1 = in.imu.back().t;
+  const double steady_from = t0 + (t1 - t0) / 3.0;
+  std::printf("%s seed %llu: %zu IMU, %zu odometer samples, %zu GNSS epochs; counted from +%.0f s\n",
+              preset.c_str(), static_cast<unsigned long long>(seed), in.imu.size(),
+              in.odom.size(), in.rover.epochs.size(), steady_from - t0);
+  std::printf("%-4s %-16s %10s %12s %10s\n", "est", "per", "calls", "mean allocs", "max");
+  for (const char* est : {"ekf", "fgo"}) {
+    auto c = makeCalibrator(est, in.description, in.base_e, CalibrationOptions{}, {}, nullptr);
+    c->addNavigation(in.nav);
+    const Tallies t = feed(in, *c, steady_from);
+    c->finish();
+    for (const auto& [name, tally] : {std::pair<const char*, const Tally&>{"IMU sample", t.imu},
+                                      {"odometer sample", t.odom},
+                                      {"GNSS epoch", t.epoch}}) {
+      std::printf("%-4s %-16s %10lld %12.1f %10lld\n", est, name, tally.calls, tally.mean(),
+                  tally.worst);
+    }
+  }
+  return 0;
+}
