@@ -7,6 +7,7 @@
 
 #include "apps/live_run_writer.h"
 #include "apps/prior_file.h"
+#include "apps/state_file.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/fix_audit.h"
 #include "common/calibration/warm_start.h"
@@ -91,8 +92,17 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   chooseSingleReceiver(data.description, job.single, replay, log);
   // Warm start: the earlier drive's calibration, its covariance grown for the days between.
   std::string warm;
+  std::optional<PriorFile> prior;
   if (!job.prior.empty()) {
-    const PriorFile p = readPriorFile(job.prior);
+    try {
+      prior = readPriorFile(job.prior);
+    } catch (const DamagedPrior& e) {
+      warm = std::string(e.what()) + ": the run starts cold, from dataset.yaml's initial guess";
+      log << "  " << warm << "\n";
+    }
+  }
+  if (prior) {
+    const PriorFile& p = *prior;
     const std::string differs = robotMismatch(p.robot, robotFingerprint(data.description));
     if (!differs.empty()) {
       throw std::runtime_error("--prior " + job.prior + " is another robot's: dataset.yaml's " +
@@ -112,8 +122,13 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   LiveRunWriter writer(outputs, "", job.estimator, log, &progress);
   // Where the dataset has a truth, each fixed epoch is checked against it as the run goes.
   const std::unique_ptr<FixAudit> audit = fixAuditOf(data, &writer);
-  CalibrationRun run =
-      replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
+  RunSink* sink = audit ? static_cast<RunSink*>(audit.get()) : &writer;
+  // A robot's state across power cycles: written every state_every_s of data, and at the end.
+  const std::map<std::string, double> robot = robotFingerprint(data.description);
+  std::optional<StateFileSink> state;
+  if (!job.state_out.empty()) sink = &state.emplace(sink, job.state_out, job.state_every_s, robot);
+  CalibrationRun run = replayFolder(data, replay, sink);
+  if (state && run.latest) writeStateFile(job.state_out, *run.latest, robot);
   if (audit) audit->addTo(run);
   progress.clear();
   notePreparation(prepared, data, run);

@@ -15,7 +15,9 @@ struct CalibrateJob {
   bool quiet = false;     // no progress line
   std::string positions;  // --gnss lc --pos <file.pos>: the LC scheme
   bool single = false;    // --gnss single (also taken when dataset.yaml names no base)
-  std::string prior;      // --prior <summary.json>: start from an earlier drive's calibration
+  std::string prior;      // --prior <summary.json or state file>: start from an earlier calibration
+  std::string state_out;  // --state-out <file>: the calibration kept across power cycles
+  double state_every_s = 60.0;        // --state-every: seconds of data between its writes
   const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };
 

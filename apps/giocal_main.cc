@@ -39,7 +39,8 @@ const char* kUsage =
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"
     "  giocal calibrate --data <dir> [--estimator ekf|fgo] [--gnss tc|single|lc --pos <file.pos>]\n"
     "                   [--config <yaml>] --out <dir> [--overwrite] [--quiet]\n"
-    "  giocal compare   --data <dir> [--gnss tc|single|lc --pos <file.pos>] [--config <yaml>] [--out "
+    "  giocal compare   --data <dir> [--gnss tc|single|lc --pos <file.pos>] [--config <yaml>] "
+    "[--out "
     "<dir>]\n"
     "                   [--overwrite] [--quiet]\n"
     "  giocal deadreckon --data <dir> --calibration <run/summary.json|calibration.csv@s|truth|"
@@ -140,9 +141,10 @@ int runRtkCommand(int argc, char** argv) {
 }
 
 void addGnssOptions(po::options_description& opts) {
-  opts.add_options()("gnss", po::value<std::string>()->default_value("tc"),
-                     "tc: double differences (tightly coupled); lc: position solutions (--pos); single: one "
-                     "receiver, no base (time-differenced phase, Doppler, single point positions)")(
+  opts.add_options()(
+      "gnss", po::value<std::string>()->default_value("tc"),
+      "tc: double differences (tightly coupled); lc: position solutions (--pos); single: one "
+      "receiver, no base (time-differenced phase, Doppler, single point positions)")(
       "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
 }
 
@@ -151,8 +153,9 @@ void addGnssOptions(po::options_description& opts) {
 std::string lcPositions(const po::variables_map& vm, bool single_allowed = false) {
   const std::string gnss = vm["gnss"].as<std::string>();
   if (gnss == "single" && !single_allowed)
-    throw po::error("--gnss single: only calibrate, compare and deadreckon have the "
-                    "single-receiver scheme so far");
+    throw po::error(
+        "--gnss single: only calibrate, compare and deadreckon have the "
+        "single-receiver scheme so far");
   if (gnss != "tc" && gnss != "lc" && gnss != "single")
     throw po::error("--gnss must be tc, lc or single, not '" + gnss + "'");
   if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
@@ -162,14 +165,21 @@ std::string lcPositions(const po::variables_map& vm, bool single_allowed = false
 }
 
 /// --gnss single: one receiver, no base.
-bool singleReceiver(const po::variables_map& vm) { return vm["gnss"].as<std::string>() == "single"; }
+bool singleReceiver(const po::variables_map& vm) {
+  return vm["gnss"].as<std::string>() == "single";
+}
 
 int runCalibrateCommand(int argc, char** argv) {
   po::options_description opts("giocal calibrate");
   opts.add_options()("data", po::value<std::string>()->required(), "dataset folder")(
       "estimator", po::value<std::string>()->default_value("ekf"), "ekf or fgo")(
       "prior", po::value<std::string>()->default_value(""),
-      "an earlier drive's summary.json to start from (same robot)");
+      "an earlier drive's summary.json or state file to start from (same robot)")(
+      "state-out", po::value<std::string>()->default_value(""),
+      "keep the calibration and its covariance in this file (atomically, with a checksum) every "
+      "--state-every seconds of data and at the end: a power cut loses at most that much")(
+      "state-every", po::value<double>()->default_value(60.0),
+      "seconds of data between writes of --state-out");
   addGnssOptions(opts);
   addRunOutputOptions(opts, true);
   const po::variables_map vm = giocal::parseCommand(
@@ -181,6 +191,9 @@ int runCalibrateCommand(int argc, char** argv) {
   job.data = vm["data"].as<std::string>();
   job.estimator = vm["estimator"].as<std::string>();
   job.prior = vm["prior"].as<std::string>();
+  job.state_out = vm["state-out"].as<std::string>();
+  job.state_every_s = vm["state-every"].as<double>();
+  if (!(job.state_every_s > 0.0)) throw po::error("--state-every must be positive");
   job.positions = lcPositions(vm, true);
   job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);

@@ -4,13 +4,21 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "apps/state_file.h"
+
 namespace giocal {
 
 PriorFile readPriorFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the prior");
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded()) throw std::runtime_error(path + ": not JSON (cut by a power loss?)");
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded()) throw DamagedPrior(path + ": not JSON (cut by a power loss?)");
+  if (j.contains("checksum")) {  // a state file (--state-out): it says whether it is whole
+    const std::string stated = j["checksum"].is_string() ? j["checksum"].get<std::string>() : "";
+    j.erase("checksum");
+    if (stateChecksum(j.dump()) != stated)
+      throw DamagedPrior(path + ": its checksum does not match (damaged, or cut by a power loss)");
+  }
   for (const char* key : {"final", "covariance_tangent", "t_final", "robot"}) {
     if (!j.contains(key) || j[key].is_null()) {
       throw std::runtime_error(path + ": no '" + key +

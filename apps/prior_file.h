@@ -2,6 +2,7 @@
 #pragma once
 
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "common/io/dataset_description.h"
@@ -14,8 +15,14 @@ struct PriorFile {
   std::map<std::string, double> robot;
 };
 
-/// Throws std::runtime_error naming the file and the key it lacks (an older format, a run that
-/// never initialized) or that cannot be read.
+/// A prior that is not whole (not JSON, or a state file whose checksum fails): the run starts cold.
+struct DamagedPrior : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Reads an earlier run's summary.json or a state file (calibrate --state-out). Throws
+/// DamagedPrior for a file that is not whole, std::runtime_error naming the file and the key it
+/// lacks (an older format, a run that never initialized) or that cannot be read.
 PriorFile readPriorFile(const std::string& path);
 
 }  // namespace giocal

@@ -103,9 +103,10 @@ int main(int argc, char** argv) {
   in.description.truth.clear();  // no live check against a truth: robot work only
   const double t0 = in.imu.front().t, t1 = in.imu.back().t;
   const double steady_from = t0 + (t1 - t0) / 3.0;
-  std::printf("%s seed %llu: %zu IMU, %zu odometer samples, %zu GNSS epochs; counted from +%.0f s\n",
-              preset.c_str(), static_cast<unsigned long long>(seed), in.imu.size(),
-              in.odom.size(), in.rover.epochs.size(), steady_from - t0);
+  std::printf(
+      "%s seed %llu: %zu IMU, %zu odometer samples, %zu GNSS epochs; counted from +%.0f s\n",
+      preset.c_str(), static_cast<unsigned long long>(seed), in.imu.size(), in.odom.size(),
+      in.rover.epochs.size(), steady_from - t0);
   std::printf("%-4s %-16s %10s %12s %10s\n", "est", "per", "calls", "mean allocs", "max");
   for (const char* est : {"ekf", "fgo"}) {
     auto c = makeCalibrator(est, in.description, in.base_e, CalibrationOptions{}, {}, nullptr);

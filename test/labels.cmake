@@ -3,6 +3,7 @@
 # the 2-core machine (ctest --timeout-free timing, 2026-11-27); the sanitizer run leaves them out.
 # A test not named here is fast and not real.
 set(GIOCAL_SLOW_TESTS
+  StateFile.WrittenAsTheRunGoesReadBackAndADamagedOneStartsCold
   SingleReceiver.BothEstimatorsCalibrateAFieldDriveFromARoverAlone
   SingleReceiver.ARoverWithABaseCalibratesWithItsRoverAloneToo
   SingleReceiver.WhatTheRoverLacksIsSaidAndTheRunGoesOnWithTheRest
