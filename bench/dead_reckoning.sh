@@ -157,7 +157,7 @@ for est in ["ekf", "fgo"]:  # the truth with errors of TC-AR's sigmas, when the 
 for est in ["ekf", "fgo"]:  # one receiver against RTK, when the rows have it
     if not any(k[0] == "SINGLE-" + est for k in v):
         continue
-    print("%-12s" % ("SINGLE/TC-AR-" + est)[:12] + "".join(
+    print("%-12s" % ("SINGLE/AR-" + est) + "".join(
         "%22.2f" % (sum(a for a, _ in v[("SINGLE-" + est, s)]) /
                     sum(a for a, _ in v[("TC-AR-" + est, s)])) for s in scenes))
 print("TC-AR better than LC and TC-WAR (MAX), per scene:")
