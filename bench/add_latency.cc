@@ -13,7 +13,7 @@
 #include "common/calibration/calibration_inputs.h"
 #include "common/online/calibrator_queue.h"
 #include "replay/estimator_factory.h"
-#include "sim/simulator.h"
+#include "simulated_inputs.h"
 
 using namespace giocal;
 
@@ -52,17 +52,10 @@ std::vector<double> feed(const CalibrationInputs& in, Front& front) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
-  std::uint64_t seed = 1;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--preset")) preset = argv[i + 1];
-    if (!std::strcmp(argv[i], "--seed")) seed = std::stoull(argv[i + 1]);
-  }
-  const std::string dir = "/tmp/giocal_add_latency_" + std::to_string(seed);
-  sim::writeDataset(sim::simulate(sim::readSimConfig(preset), seed), dir);
-  const CalibrationInputs in = loadCalibrationInputs(dir);
-  std::printf("%s seed %llu: %zu IMU samples\n", preset.c_str(),
-              static_cast<unsigned long long>(seed), in.imu.size());
+  const bench::PresetSeed ps = bench::presetAndSeed(argc, argv);
+  const CalibrationInputs in = bench::simulatedInputs(ps, "giocal_add_latency");
+  std::printf("%s seed %llu: %zu IMU samples\n", ps.preset.c_str(),
+              static_cast<unsigned long long>(ps.seed), in.imu.size());
   std::printf("%-4s %-8s %10s %10s %10s\n", "est", "front", "p50 ms", "p99 ms", "max ms");
   for (const char* est : {"ekf", "fgo"}) {
     auto direct = makeCalibrator(est, in.description, in.base_e, CalibrationOptions{}, {}, nullptr);

@@ -15,7 +15,7 @@
 
 #include "common/calibration/calibration_inputs.h"
 #include "replay/estimator_factory.h"
-#include "sim/simulator.h"
+#include "simulated_inputs.h"
 
 namespace {
 std::atomic<long long> g_allocations{0};
@@ -91,21 +91,14 @@ Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string preset = std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml";
-  std::uint64_t seed = 1;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--preset")) preset = argv[i + 1];
-    if (!std::strcmp(argv[i], "--seed")) seed = std::stoull(argv[i + 1]);
-  }
-  const std::string dir = "/tmp/giocal_allocations_" + std::to_string(seed);
-  sim::writeDataset(sim::simulate(sim::readSimConfig(preset), seed), dir);
-  CalibrationInputs in = loadCalibrationInputs(dir);
+  const bench::PresetSeed ps = bench::presetAndSeed(argc, argv);
+  CalibrationInputs in = bench::simulatedInputs(ps, "giocal_allocations");
   in.description.truth.clear();  // no live check against a truth: robot work only
   const double t0 = in.imu.front().t, t1 = in.imu.back().t;
   const double steady_from = t0 + (t1 - t0) / 3.0;
   std::printf(
       "%s seed %llu: %zu IMU, %zu odometer samples, %zu GNSS epochs; counted from +%.0f s\n",
-      preset.c_str(), static_cast<unsigned long long>(seed), in.imu.size(), in.odom.size(),
+      ps.preset.c_str(), static_cast<unsigned long long>(ps.seed), in.imu.size(), in.odom.size(),
       in.rover.epochs.size(), steady_from - t0);
   std::printf("%-4s %-16s %10s %12s %10s\n", "est", "per", "calls", "mean allocs", "max");
   for (const char* est : {"ekf", "fgo"}) {

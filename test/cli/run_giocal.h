@@ -1,6 +1,7 @@
 // runGiocal: the giocal binary run with arguments, its standard output and error together.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
@@ -20,6 +21,13 @@ inline GiocalResult runGiocal(const std::string& args) {
   char buf[512];
   while (p && std::fgets(buf, sizeof(buf), p)) r.out += buf;
   if (p) r.code = WEXITSTATUS(pclose(p));
+  return r;
+}
+
+/// runGiocal that expects the command to succeed (a gtest failure naming it otherwise).
+inline GiocalResult runGiocalOk(const std::string& args) {
+  const GiocalResult r = runGiocal(args);
+  EXPECT_EQ(r.code, 0) << args << "\n" << r.out;
   return r;
 }
 

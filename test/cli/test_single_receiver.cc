@@ -52,11 +52,7 @@ void expectLikeRtk(const nlohmann::json& s, const nlohmann::json& rtk, const std
 TEST(SingleReceiver, BothEstimatorsCalibrateAFieldDriveFromARoverAlone) {
   test::TempDir dir;
   const std::string preset = test::fieldPresetWithLaps(dir, 3);
-  const auto run = [](const std::string& args) {
-    const test::GiocalResult r = test::runGiocal(args);
-    EXPECT_EQ(r.code, 0) << args << "\n" << r.out;
-    return r;
-  };
+  const auto run = test::runGiocalOk;
   // The same drive (the motion sensors draw from their own generators) with a base, for the
   // RTK calibration to compare with.
   run("simulate --config " + preset + " --seed 5201 --out " + dir.file("with_base"));
@@ -94,11 +90,7 @@ TEST(SingleReceiver, BothEstimatorsCalibrateAFieldDriveFromARoverAlone) {
 TEST(SingleReceiver, ARoverWithABaseCalibratesWithItsRoverAloneToo) {
   test::TempDir dir;
   const std::string preset = test::fieldPresetWithLaps(dir, 3);
-  const auto run = [](const std::string& args) {
-    const test::GiocalResult r = test::runGiocal(args);
-    EXPECT_EQ(r.code, 0) << args << "\n" << r.out;
-    return r;
-  };
+  const auto run = test::runGiocalOk;
   run("simulate --config " + preset + " --seed 5202 --out " + dir.file("d"));
   run("calibrate --data " + dir.file("d") + " --quiet --out " + dir.file("rtk"));
   run("calibrate --data " + dir.file("d") + " --gnss single --quiet --out " + dir.file("single"));
@@ -111,7 +103,8 @@ TEST(SingleReceiver, ARoverWithABaseCalibratesWithItsRoverAloneToo) {
       test::runGiocal("validate --data " + dir.file("d") + " --run " + dir.file("single") +
                       " --gnss single --quiet --out " + dir.file("v"));
   EXPECT_EQ(v.code, 2) << v.out;
-  EXPECT_NE(v.out.find("--gnss single: only calibrate, compare and deadreckon"), std::string::npos) << v.out;
+  EXPECT_NE(v.out.find("--gnss single: only calibrate, compare and deadreckon"), std::string::npos)
+      << v.out;
 }
 
 // The rover file of `from` written to `to` (a copy of the dataset) with `strip` applied.

@@ -32,11 +32,7 @@ double rms(const std::vector<double>& v) {
 TEST(WarmStart, ASecondDriveFromTheFirstsCalibrationConvergesEarlierAndEndsCloser) {
   test::TempDir dir;
   const std::string preset = test::fieldPresetWithLaps(dir, 3);
-  const auto run = [](const std::string& args) {
-    const test::GiocalResult r = test::runGiocal(args);
-    EXPECT_EQ(r.code, 0) << args << "\n" << r.out;
-    return r;
-  };
+  const auto run = test::runGiocalOk;
   for (int seed = 3501; seed <= 3504; ++seed) {
     run("simulate --config " + preset + " --out " + dir.file("d" + std::to_string(seed)) +
         " --seed " + std::to_string(seed));
