@@ -11,6 +11,7 @@
 #include "apps/compare_command.h"
 #include "apps/dataset_commands.h"
 #include "apps/deadreckon_command.h"
+#include "apps/gnss_options.h"
 #include "apps/interrupt_watch.h"
 #include "apps/observability_command.h"
 #include "apps/report_command.h"
@@ -24,6 +25,9 @@
 #include "options/giocal_config.h"
 
 namespace po = boost::program_options;
+using giocal::addGnssOptions;
+using giocal::lcPositions;
+using giocal::singleReceiver;
 
 namespace {
 
@@ -31,8 +35,8 @@ const char* kUsage =
     "giocal: online IMU-odometer calibration from raw GNSS\n"
     "usage:\n"
     "  giocal check     --data <dir>\n"
-    "  giocal simulate  --config <yaml> --out <dir> [--seed <n>]\n"
-    "  giocal simulate  --config <yaml> --trajectory <file.pos> --rover <obs> --base <obs>\n"
+    "  giocal simulate  --config <yaml> --out <dir> [--seed <n>] [--no-base]\n"
+    "  giocal simulate  --config <yaml> --trajectory <file.pos> --rover <obs> [--base <obs>]\n"
     "                   --nav <nav>... --out <dir> [--seed <n>]\n"
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
@@ -47,6 +51,7 @@ const char* kUsage =
     "guess>\n"
     "                   [--start <s>] [--duration <s>] [--reference <trajectory.csv|file.pos>] "
     "[--config <yaml>]\n"
+    "                   [--gnss tc|single|lc --pos <file.pos>]\n"
     "                   --out <dir> [--overwrite] [--quiet]\n"
     "  giocal import    --ubx <file.ubx> --out <dir> [--overwrite] [--quiet]\n"
     "  giocal import    --bag <file.bag> [--imu-topic t] [--odom-topic t] [--fix-topic t]\n"
@@ -138,35 +143,6 @@ int runRtkCommand(int argc, char** argv) {
             << s.single << " single; " << s.wall_s << " s for " << s.data_s << " s of data -> "
             << job.out << "\n";
   return 0;
-}
-
-void addGnssOptions(po::options_description& opts) {
-  opts.add_options()(
-      "gnss", po::value<std::string>()->default_value("tc"),
-      "tc: double differences (tightly coupled); lc: position solutions (--pos); single: one "
-      "receiver, no base (time-differenced phase, Doppler, single point positions)")(
-      "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
-}
-
-/// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Only calibrate,
-/// compare and deadreckon take --gnss single so far.
-std::string lcPositions(const po::variables_map& vm, bool single_allowed = false) {
-  const std::string gnss = vm["gnss"].as<std::string>();
-  if (gnss == "single" && !single_allowed)
-    throw po::error(
-        "--gnss single: only calibrate, compare and deadreckon have the "
-        "single-receiver scheme so far");
-  if (gnss != "tc" && gnss != "lc" && gnss != "single")
-    throw po::error("--gnss must be tc, lc or single, not '" + gnss + "'");
-  if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {
-    throw po::error("--gnss lc needs --pos <file.pos>, and --pos only goes with --gnss lc");
-  }
-  return vm["pos"].as<std::string>();
-}
-
-/// --gnss single: one receiver, no base.
-bool singleReceiver(const po::variables_map& vm) {
-  return vm["gnss"].as<std::string>() == "single";
 }
 
 int runCalibrateCommand(int argc, char** argv) {

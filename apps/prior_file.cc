@@ -1,6 +1,7 @@
 #include "apps/prior_file.h"
 
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -11,8 +12,16 @@ namespace giocal {
 PriorFile readPriorFile(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the prior");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded()) throw DamagedPrior(path + ": not JSON (cut by a power loss?)");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded()) {
+    // A state file starts with its checksum (keys are written sorted): a robot's state cut by a
+    // power loss starts the run cold; any other file that is not JSON is refused.
+    const bool state = text.find("\"checksum\"") < 16;
+    const std::string why = path + ": not JSON (cut by a power loss?)";
+    if (state) throw DamagedPrior(why);
+    throw std::runtime_error(why);
+  }
   if (j.contains("checksum")) {  // a state file (--state-out): it says whether it is whole
     const std::string stated = j["checksum"].is_string() ? j["checksum"].get<std::string>() : "";
     j.erase("checksum");

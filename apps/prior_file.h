@@ -15,14 +15,15 @@ struct PriorFile {
   std::map<std::string, double> robot;
 };
 
-/// A prior that is not whole (not JSON, or a state file whose checksum fails): the run starts cold.
+/// A state file that is not whole (cut, or its checksum fails): the run starts cold.
 struct DamagedPrior : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
 /// Reads an earlier run's summary.json or a state file (calibrate --state-out). Throws
-/// DamagedPrior for a file that is not whole, std::runtime_error naming the file and the key it
-/// lacks (an older format, a run that never initialized) or that cannot be read.
+/// DamagedPrior for a state file that is not whole, std::runtime_error naming the file and the
+/// key it lacks (an older format, a run that never initialized) or that cannot be read (a
+/// summary.json that is not JSON).
 PriorFile readPriorFile(const std::string& path);
 
 }  // namespace giocal
