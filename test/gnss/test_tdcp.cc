@@ -247,7 +247,10 @@ TEST(Tdcp, StaticRoversOfTheRealPairsStayPutAsSingleReceivers) {
   EXPECT_EQ(mosaic.pairs, 300);
   EXPECT_EQ(mosaic.solved, 300);
   EXPECT_LT(mosaic.p95_mm, 6.0);
-  EXPECT_GT(mosaic.totals.ephemeris_changes, 0);  // new ephemerides arrive during the hour
+  // New ephemerides arrive during the run; the pairs across them are computed with one
+  // ephemeris and stay as good as the rest (an issue-of-data change would jump the range).
+  EXPECT_GT(mosaic.totals.ephemeris_changes, 0);
+  EXPECT_LT(mosaic.max_mm, 8.0);  // measured 5.7 mm
   const StaticFigures five = staticRover(kReal + "cssrlib-static-5km/SEPT078M1.21O",
                                          kReal + "cssrlib-static-5km/SEPT078M.21P", {});
   EXPECT_EQ(five.solved, 59);
