@@ -15,7 +15,7 @@ constexpr double kDopplerVelocitySigma = 0.1;
 std::optional<PositionFix> TdcpTrack::add(const ObsEpoch& epoch) {
   const SppSolution spp = solveSpp(epoch, orbits_, SppOptions{});
   if (!spp.valid) {
-    builder_.add(epoch, last_ ? last_->p_e : Eigen::Vector3d::Zero());
+    if (last_) builder_.add(epoch, last_->p_e);  // the slip tests see the epoch
     last_.reset();
     last_velocity_.reset();
     return std::nullopt;

@@ -167,7 +167,9 @@ TdcpPair TdcpBuilder::add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e)
   TdcpPair out;
   out.t0 = previous_.t;
   out.t1 = epoch.t;
-  const bool paired = has_previous_ && epoch.t > previous_.t &&
+  // Positions off the Earth (none known at one of the epochs) pair nothing.
+  const bool located = previous_e_.norm() > 6.0e6 && rover_e.norm() > 6.0e6;
+  const bool paired = has_previous_ && located && epoch.t > previous_.t &&
                       epoch.t - previous_.t <= options_.max_interval_s && epoch.flag != 1;
   if (has_previous_ && !paired) ++out.left_out.gaps;
   const double mask = options_.elevation_mask_deg * M_PI / 180.0;

@@ -1,6 +1,5 @@
 #include "common/online/calibrator.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
