@@ -7,6 +7,7 @@
 
 #include "apps/live_run_writer.h"
 #include "apps/prior_file.h"
+#include "apps/run_validation.h"
 #include "apps/state_file.h"
 #include "common/calibration/calibration_options.h"
 #include "common/calibration/fix_audit.h"
@@ -68,6 +69,35 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
   for (const std::string& w : run.warnings) out << "  warning: " << w << "\n";
   out.unsetf(std::ios::fixed);
 }
+
+namespace {
+
+// The run checks its own calibration on its drive (validate's windows) before its summary is
+// written: the verdict goes into summary.json, and a calibration that dead-reckons worse than
+// the guess makes the run suspect.
+void validateOwnRun(const DatasetFolder& data, const GiocalConfig& config, const ReplayJob& replay,
+                    OutputSet& outputs, const CalibrateJob& job, RunWriter& writer,
+                    CalibrationRun& run, std::ostream& log) {
+  writer.closeFiles();  // calibration.csv, read by the windows
+  const RunValidation v =
+      validateAtEnd(data, config, replay.options, job.positions, outputs.staging(), job.stop);
+  run.validation = v;
+  if (v.verdict.empty()) {
+    log << "  validation: not done (" << v.why_not << ")\n";
+    return;
+  }
+  log << "  validation: " << v.verdict << " (dead reckoning through " << v.windows
+      << " GNSS outage windows: " << fixedText(v.calibrated_m, 2) << " m calibrated against "
+      << fixedText(v.guess_m, 2) << " m with the guess, better in " << v.better_windows << ")\n";
+  if (v.verdict == "worse" && run.status == "ok") {
+    run.status =
+        "suspect: the calibration dead-reckons worse than the initial guess in the "
+        "validation windows (ratio " +
+        fixedText(v.ratio, 2) + ")";
+  }
+}
+
+}  // namespace
 
 CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   ReplayJob replay;
@@ -134,6 +164,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   notePreparation(prepared, data, run);
   if (!warm.empty()) run.warn(warm);
   const std::optional<TruthCalibration>& truth = data.truth;
+  if (job.validate) validateOwnRun(data, config, replay, outputs, job, writer, run, log);
   writer.finish(run, truth ? &truth->calib : nullptr);
   outputs.commit();
   printCalibrationSummary(run, truth ? &truth->calib : nullptr, log);

@@ -17,7 +17,8 @@ struct CalibrateJob {
   bool single = false;    // --gnss single (also taken when dataset.yaml names no base)
   std::string prior;      // --prior <summary.json or state file>: start from an earlier calibration
   std::string state_out;  // --state-out <file>: the calibration kept across power cycles
-  double state_every_s = 60.0;        // --state-every: seconds of data between its writes
+  double state_every_s = 60.0;  // --state-every: seconds of data between its writes
+  bool validate = true;  // check the calibration on its drive at the end (not with --no-validate)
   const StopRequest* stop = nullptr;  // Ctrl-C: the run stops and writes nothing
 };
 

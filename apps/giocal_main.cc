@@ -155,7 +155,10 @@ int runCalibrateCommand(int argc, char** argv) {
       "keep the calibration and its covariance in this file (atomically, with a checksum) every "
       "--state-every seconds of data and at the end: a power cut loses at most that much")(
       "state-every", po::value<double>()->default_value(60.0),
-      "seconds of data between writes of --state-out");
+      "seconds of data between writes of --state-out")(
+      "no-validate", po::bool_switch(),
+      "skip the check at the end (validate's GNSS outage windows, dead-reckoned with the "
+      "calibration and with the guess)");
   addGnssOptions(opts);
   addRunOutputOptions(opts, true);
   const po::variables_map vm = giocal::parseCommand(
@@ -169,6 +172,7 @@ int runCalibrateCommand(int argc, char** argv) {
   job.prior = vm["prior"].as<std::string>();
   job.state_out = vm["state-out"].as<std::string>();
   job.state_every_s = vm["state-every"].as<double>();
+  job.validate = !vm["no-validate"].as<bool>();
   if (!(job.state_every_s > 0.0)) throw po::error("--state-every must be positive");
   job.positions = lcPositions(vm, true);
   job.single = singleReceiver(vm);

@@ -6,6 +6,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "apps/run_validation.h"
 #include "common/calibration/calibration_inputs.h"
 #include "common/gnss/pos_reader.h"
 #include "common/gnss/rtk_job.h"
@@ -20,36 +21,6 @@ namespace giocal {
 namespace {
 
 const std::vector<std::string> kFiles{"summary.json", "gnss_reference.pos"};
-
-/// The fixed RTK solutions of the dataset's rover and base, written to `pos`.
-std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfig& config,
-                                  const std::string& pos, const StopRequest* stop) {
-  const DatasetDescription& d = in.description;
-  if (d.base_obs.empty())
-    throw std::runtime_error(d.pathOf("dataset.yaml") +
-                             ": no base observations; validate a rover-only dataset with --gnss lc "
-                             "--pos <file.pos>");
-  RtkJob job;
-  job.rover = d.pathOf(d.rover_obs);
-  job.base = d.pathOf(d.base_obs);
-  for (const std::string& n : d.nav) job.nav.push_back(d.pathOf(n));
-  job.base_pos = d.base_position_ecef;
-  job.options = config.rtk;
-  job.out = pos;
-  job.stop = stop;
-  std::vector<RtkSolution> solutions;
-  runRtk(job, &solutions);
-  std::vector<PositionFix> fixes;
-  for (const RtkSolution& s : solutions) {
-    if (s.quality != 1) continue;
-    PositionFix f;
-    f.t = s.t;
-    f.p_e = s.p_e;
-    f.quality = 1;
-    fixes.push_back(f);
-  }
-  return fixes;
-}
 
 }  // namespace
 
@@ -66,19 +37,12 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   const CalibrationInputs in = loadCalibrationInputs(data, job.positions);
   OutputSet outputs(job.out);
-  std::vector<PositionFix> reference_fixes;
-  std::string reference;
-  if (job.positions.empty()) {
-    reference_fixes = rtkFixes(in, config, outputs.stagedPath("gnss_reference.pos"), job.stop);
-    reference = "RTK fixes of the dataset (gnss_reference.pos)";
-  } else {
-    reference_fixes = in.positions;
-    reference = job.positions;
-  }
-  if (reference_fixes.size() < 2)
-    throw std::runtime_error("validate needs a GNSS solution over the drive: " + reference +
-                             " has " + std::to_string(reference_fixes.size()) + " rows");
-  const ReferenceTrajectory trajectory(positionRows(reference_fixes));
+  // The RTK solution is one of the outputs; with --pos none is written.
+  const ValidationReference ref = validationReference(
+      in, config, job.positions,
+      job.positions.empty() ? outputs.stagedPath("gnss_reference.pos") : std::string(), job.stop);
+  const std::string reference = ref.name + (job.positions.empty() ? " (gnss_reference.pos)" : "");
+  const ReferenceTrajectory trajectory(positionRows(ref.fixes));
   ValidationJob v;
   v.run = job.run;
   v.outage_s = job.outage_s;

@@ -223,6 +223,21 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
     if (!h.decided) j["lc_heights"]["why_not"] = h.why_not;
   }
   if (!run.robot.empty()) j["robot"] = run.robot;
+  if (run.validation) {
+    const RunValidation& v = *run.validation;
+    if (v.verdict.empty()) {
+      j["validation"] = {{"why_not", v.why_not}};
+    } else {
+      j["validation"] = {{"verdict", v.verdict},
+                         {"calibrated", v.calibrated_m},
+                         {"guess", v.guess_m},
+                         {"ratio", v.ratio},
+                         {"better_windows", v.better_windows},
+                         {"windows", v.windows},
+                         {"confidence", v.confidence},
+                         {"reference", v.reference}};
+    }
+  }
   j["counters"] = run.counters;
   j["timing_s"] = run.timing;
   j["warnings"] = run.warnings;

@@ -45,6 +45,16 @@ struct CalibrationEstimate {
   Eigen::Matrix<double, 8, 1> sigma() const;
 };
 
+/// What `calibrate` found when it validated its own calibration at its end (evaluation/
+/// validation.h): dead reckoning through GNSS outage windows with it and with the guess.
+struct RunValidation {
+  std::string verdict;  // "better", "no better", "worse"; empty when not validated
+  std::string why_not;  // why it was not validated (a short drive, no GNSS reference, ...)
+  double calibrated_m = 0.0, guess_m = 0.0, ratio = 0.0, confidence = 0.0;
+  int better_windows = 0, windows = 0;
+  std::string reference;  // what the windows were checked against
+};
+
 struct CalibrationRun {
   std::string estimator;                      // "ekf" or "fgo"
   std::optional<CalibrationEstimate> latest;  // the newest calibration estimate
@@ -74,6 +84,7 @@ struct CalibrationRun {
   // The robot the calibration belongs to (warm_start.h's robotFingerprint of dataset.yaml): a
   // later drive's --prior is refused when it differs.
   std::map<std::string, double> robot;
+  std::optional<RunValidation> validation;     // calibrate's check on its own drive
   std::vector<std::string> warnings;           // bad data met on the way, divergence (capped)
   std::map<std::string, std::string> options;  // the options in effect, defaults included
   // "ok", or "partial: <why>" when the data after a divergence or an IMU gap allowed no restart:

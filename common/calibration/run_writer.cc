@@ -60,13 +60,22 @@ void RunWriter::estimate(const CalibrationEstimate& e) {
 void RunWriter::trajectory(const TruthSample& s) { writeRow(trajectory_, truthCsvRow(s)); }
 
 void RunWriter::finish(const CalibrationRun& run, const OdometerCalibration* truth) {
-  std::map<std::string, std::uintmax_t> files;
+  closeFiles();
+  writeSummary(run, truth);
+}
+
+void RunWriter::closeFiles() {
+  if (!closed_.empty()) return;
   for (const char* name : {"calibration.csv", "trajectory.csv", "gnss.csv"}) {
-    files[name] = set_.close(prefix_ + name);
+    closed_[name] = set_.close(prefix_ + name);
   }
-  if (delay_) files["odometer_delay.csv"] = set_.close(prefix_ + "odometer_delay.csv");
-  if (tilt_) files["gyro_tilt.csv"] = set_.close(prefix_ + "gyro_tilt.csv");
-  set_.open(prefix_ + "summary.json", true) << summaryJson(run, truth, files);
+  if (delay_) closed_["odometer_delay.csv"] = set_.close(prefix_ + "odometer_delay.csv");
+  if (tilt_) closed_["gyro_tilt.csv"] = set_.close(prefix_ + "gyro_tilt.csv");
+}
+
+void RunWriter::writeSummary(const CalibrationRun& run, const OdometerCalibration* truth) {
+  closeFiles();
+  set_.open(prefix_ + "summary.json", true) << summaryJson(run, truth, closed_);
 }
 
 }  // namespace giocal

@@ -6,6 +6,8 @@
 // (io/output_set.h).
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <string>
 
 #include "common/io/output_set.h"
@@ -24,6 +26,9 @@ class RunWriter : public RunSink {
 
   /// Closes the CSV files and writes summary.json (the set's marker) naming them.
   void finish(const CalibrationRun& run, const OdometerCalibration* truth);
+  /// finish() in two steps, for a caller that reads the closed files before the summary.
+  void closeFiles();
+  void writeSummary(const CalibrationRun& run, const OdometerCalibration* truth);
 
  private:
   OutputSet& set_;
@@ -33,6 +38,7 @@ class RunWriter : public RunSink {
   std::ostream& gnss_;
   std::ostream* delay_ = nullptr;  // opened at the first estimate that has the delay state
   std::ostream* tilt_ = nullptr;   // opened at the first estimate that has the gyro's tilt
+  std::map<std::string, std::uintmax_t> closed_;  // file -> size, once closed
 };
 
 }  // namespace giocal
