@@ -22,6 +22,10 @@ PriorFile readPriorFile(const std::string& path) {
     if (state) throw DamagedPrior(why);
     throw std::runtime_error(why);
   }
+  if (j.contains("format") && j["format"] != "giocal state 1") {
+    throw std::runtime_error(path + ": a state file of another format (" + j["format"].dump() +
+                             "); this giocal reads \"giocal state 1\"");
+  }
   if (j.contains("checksum")) {  // a state file (--state-out): it says whether it is whole
     const std::string stated = j["checksum"].is_string() ? j["checksum"].get<std::string>() : "";
     j.erase("checksum");

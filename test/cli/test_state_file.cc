@@ -81,6 +81,15 @@ TEST(StateFile, WrittenAsTheRunGoesReadBackAndADamagedOneStartsCold) {
   changed[changed.find("\"s_v\": ") + 8] =
       changed[changed.find("\"s_v\": ") + 8] == '1' ? '2' : '1';
   std::ofstream(dir.file("changed.json")) << changed;
+  // Another format: refused with one line, not taken for a damaged file.
+  std::string other = text;
+  other.replace(other.find("giocal state 1"), 14, "giocal state 9");
+  std::ofstream(dir.file("other.json")) << other;
+  const test::GiocalResult refused =
+      test::runGiocal("calibrate --data " + data + " --quiet --out " + dir.file("other") +
+                      " --prior " + dir.file("other.json"));
+  EXPECT_EQ(refused.code, 1) << refused.out;
+  EXPECT_NE(refused.out.find("a state file of another format"), std::string::npos) << refused.out;
   for (const char* damaged : {"cut.json", "changed.json"}) {
     const test::GiocalResult cold =
         test::runGiocal("calibrate --data " + data + " --quiet --out " + dir.file("cold") +
