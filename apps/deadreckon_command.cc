@@ -15,6 +15,7 @@
 #include "evaluation/dead_reckoning.h"
 #include "options/giocal_config.h"
 #include "replay/measured_heights.h"
+#include "replay/run_preparation.h"
 
 namespace giocal {
 namespace {
@@ -49,9 +50,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   CalibrationInputs in = loadCalibrationInputs(data, job.positions);
   // One receiver (asked, or a dataset without a base): its own track starts the aided part.
-  const DatasetDescription& d = data.description;
-  dr.options.single_receiver =
-      job.single || (job.positions.empty() && !d.rover_obs.empty() && d.base_obs.empty());
+  dr.options.single_receiver = usesSingleReceiver(data.description, job.single, job.positions);
   if (dr.options.single_receiver) addSingleReceiverTrack(in, dr.options.single);
   checkStop(job.stop);
   // The GNSS-aided part weighs the solutions' heights as calibrate did.
@@ -101,7 +100,7 @@ void runDeadReckon(const DeadReckonJob& job, std::ostream& log) {
                                   source.gyro_tilt.y() * kRadToDeg};
   }
   j["reference"] = reference_path;
-  j["gnss_before_start"] = !job.positions.empty()     ? "lc: " + job.positions
+  j["gnss_before_start"] = !job.positions.empty()       ? "lc: " + job.positions
                            : dr.options.single_receiver ? std::string("single")
                                                         : std::string("tc");
   j["start_s"] = job.start_s;

@@ -1,7 +1,5 @@
 #include "apps/observability_command.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <iomanip>
 #include <memory>
@@ -9,6 +7,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "apps/dataset_rtk.h"
 #include "common/calibration/weak_directions.h"
 #include "common/gnss/rtk_job.h"
 #include "common/io/dataset_description.h"
@@ -21,14 +20,6 @@
 
 namespace giocal {
 namespace {
-
-/// A temporary .pos file, removed with the object.
-struct TempPosFile {
-  std::string path = (std::filesystem::temp_directory_path() /
-                      ("giocal_observability_" + std::to_string(::getpid()) + ".pos"))
-                         .string();
-  ~TempPosFile() { std::filesystem::remove(path); }
-};
 
 std::string motionText(const DriveMotion& m) {
   std::ostringstream s;
@@ -63,15 +54,9 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   const DatasetDescription& d = data.description;
   if (positions.empty() && d.truth.empty()) {
     requireRawGnss(d);
-    own_rtk = std::make_unique<TempPosFile>();
-    RtkJob rtk;
-    rtk.rover = d.pathOf(d.rover_obs);
-    rtk.base = d.pathOf(d.base_obs);
-    for (const std::string& n : d.nav) rtk.nav.push_back(d.pathOf(n));
-    rtk.base_pos = d.base_position_ecef;
-    rtk.options = config.rtk;
-    rtk.out = positions = own_rtk->path;
-    runRtk(rtk);
+    own_rtk = std::make_unique<TempPosFile>("observability");
+    positions = own_rtk->path;
+    runRtk(datasetRtkJob(d, config, positions));
   }
   CalibrationInputs in = loadCalibrationInputs(data, positions);
   ObservabilityJob oj;

@@ -1,11 +1,8 @@
 #include "apps/run_validation.h"
 
-#include <unistd.h>
-
-#include <filesystem>
 #include <stdexcept>
 
-#include "common/gnss/rtk_job.h"
+#include "apps/dataset_rtk.h"
 #include "evaluation/validation.h"
 
 namespace giocal {
@@ -20,16 +17,8 @@ std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfi
     throw std::runtime_error(d.pathOf("dataset.yaml") +
                              ": no base observations; validate a rover-only dataset with --gnss lc "
                              "--pos <file.pos>");
-  RtkJob job;
-  job.rover = d.pathOf(d.rover_obs);
-  job.base = d.pathOf(d.base_obs);
-  for (const std::string& n : d.nav) job.nav.push_back(d.pathOf(n));
-  job.base_pos = d.base_position_ecef;
-  job.options = config.rtk;
-  job.out = pos;
-  job.stop = stop;
   std::vector<RtkSolution> solutions;
-  runRtk(job, &solutions);
+  runRtk(datasetRtkJob(d, config, pos, stop), &solutions);
   std::vector<PositionFix> fixes;
   for (const RtkSolution& s : solutions) {
     if (s.quality != 1) continue;
@@ -69,13 +58,10 @@ RunValidation validateAtEnd(const DatasetFolder& data, const GiocalConfig& confi
     out.why_not = "no validation for one receiver yet (its reference would be its own track)";
     return out;
   }
-  const std::string pos = (std::filesystem::temp_directory_path() /
-                           ("giocal_validation_" + std::to_string(getpid()) + ".pos"))
-                              .string();
+  const TempPosFile pos("validation");
   try {
     const CalibrationInputs in = loadCalibrationInputs(data, positions);
-    const ValidationReference ref = validationReference(in, config, positions, pos, stop);
-    std::filesystem::remove(pos);
+    const ValidationReference ref = validationReference(in, config, positions, pos.path, stop);
     ValidationJob v;
     v.run = run_dir;
     v.options = options;
@@ -92,7 +78,6 @@ RunValidation validateAtEnd(const DatasetFolder& data, const GiocalConfig& confi
   } catch (const Interrupted&) {
     throw;
   } catch (const std::runtime_error& e) {
-    std::filesystem::remove(pos);
     out.why_not = e.what();
   }
   return out;

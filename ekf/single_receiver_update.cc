@@ -80,9 +80,7 @@ int SingleReceiverUpdate::updateTdcp(CalibrationFilter& f, TdcpPair pair, GnssEp
       const int rows = static_cast<int>(pair.rows.size());
       return f.update(model, keys, INFINITY).accepted ? rows : 0;
     }
-    // The worst row's signal goes (the reference stays unless it is the only one left).
-    pair.signals.erase(pair.signals.begin() + pair.rows[static_cast<size_t>(worst)].signal);
-    formRows(pair);
+    dropRowSignal(pair, worst);
     ++rep.rejected_rows;
   }
   return 0;

@@ -82,9 +82,7 @@ bool FactorGraphCore::rejectWorstTdcp(FgoEpoch& e, const FgoEpoch& prev) {
   long worst = 0;
   if (z.maxCoeff(&worst) <= fo_.rejection_sigma) return false;
   run_->count(Counter::kGnssRowsRejected);
-  e.tdcp.signals.erase(e.tdcp.signals.begin() + e.tdcp.rows[static_cast<size_t>(worst)].signal);
-  formRows(e.tdcp);
-  if (e.tdcp.rows.size() < 3) e.tdcp.rows.clear();
+  dropRowSignal(e.tdcp, worst);
   addTdcpFactor(e, prev);
   return true;
 }

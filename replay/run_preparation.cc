@@ -41,14 +41,17 @@ void notePreparation(const RunPreparation& p, const DatasetFolder& data, Calibra
   if (p.height_scale_applied != 0.0) run.warn(appliedHeightScaleWarning(*p.heights));
 }
 
+bool usesSingleReceiver(const DatasetDescription& d, bool asked, const std::string& positions) {
+  return asked || (positions.empty() && d.roverAlone());
+}
+
 void chooseSingleReceiver(const DatasetDescription& d, bool asked, ReplayJob& job,
                           std::ostream& log) {
-  const bool rover_alone = job.positions.empty() && !d.rover_obs.empty() && d.base_obs.empty();
-  if (!asked && rover_alone) {
+  job.options.single_receiver = usesSingleReceiver(d, asked, job.positions);
+  if (!asked && job.options.single_receiver) {
     log << "  dataset.yaml names no base observations: the single-receiver scheme (--gnss "
            "single)\n";
   }
-  job.options.single_receiver = asked || rover_alone;
 }
 
 }  // namespace giocal

@@ -17,9 +17,12 @@ struct RunPreparation {
   double height_scale_applied = 0.0;  // put on the solutions' height sigmas (0: none)
 };
 
-/// The GNSS scheme: the single-receiver one when asked (--gnss single) or when the dataset has
-/// a rover and no base and no position solutions are given (said in one line to `log`).
-/// Sets job.options.single_receiver.
+/// Whether a run takes the single-receiver scheme: asked (--gnss single), or a rover alone in
+/// the dataset and no position solutions given.
+bool usesSingleReceiver(const DatasetDescription& d, bool asked, const std::string& positions);
+
+/// Sets job.options.single_receiver as usesSingleReceiver says; when the dataset decided it, one
+/// line to `log` says so.
 void chooseSingleReceiver(const DatasetDescription& d, bool asked, ReplayJob& job,
                           std::ostream& log);
 

@@ -61,7 +61,7 @@ CalibrationInputs loadCalibrationInputs(const DatasetFolder& data, const std::st
     }
     return in;
   }
-  if (!d.rover_obs.empty() && d.base_obs.empty()) {
+  if (d.roverAlone()) {
     // A rover alone (the single-receiver scheme): the origin is its first single point position,
     // the track for the initial heading is the caller's (singleReceiverTrack).
     in.rover = readRinexObs(need(d.rover_obs));
@@ -106,8 +106,9 @@ void addSingleReceiverTrack(CalibrationInputs& in, const SingleReceiverOptions& 
     if (const std::optional<PositionFix> fix = track.add(e)) in.positions.push_back(*fix);
   }
   if (in.positions.empty()) {
-    throw std::runtime_error("no single point position of the rover (do the navigation files "
-                             "cover its observations?)");
+    throw std::runtime_error(
+        "no single point position of the rover (do the navigation files "
+        "cover its observations?)");
   }
   in.base_e = in.positions.front().p_e;
 }

@@ -48,11 +48,8 @@ bool solveOnce(const TdcpPair& pair, const Eigen::Vector3d& p0_e, const std::vec
     if (ldlt.info() != Eigen::Success || ldlt.rcond() < 1e-12) return false;
     x = ldlt.solve(Aw.transpose() * (w.asDiagonal() * r));
     d += x.head<3>();
-    if (x.head<3>().norm() < 1e-6) {
-      out.cov = ldlt.solve(Eigen::MatrixXd::Identity(k, k)).topLeftCorner(3, 3);
-      break;
-    }
     out.cov = ldlt.solve(Eigen::MatrixXd::Identity(k, k)).topLeftCorner(3, 3);
+    if (x.head<3>().norm() < 1e-6) break;
   }
   normalized = w.asDiagonal() * (r - A * x);
   out.d_e = d;

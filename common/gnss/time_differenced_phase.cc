@@ -109,6 +109,12 @@ int formRows(TdcpPair& pair) {
   return groups_alone;
 }
 
+void dropRowSignal(TdcpPair& pair, long row) {
+  pair.signals.erase(pair.signals.begin() + pair.rows[static_cast<size_t>(row)].signal);
+  formRows(pair);
+  if (pair.rows.size() < 3) pair.rows.clear();
+}
+
 int screenTdcp(TdcpPair& pair, const Eigen::Vector3d& p0_e, const Eigen::Vector3d& p1_e,
                double predicted_sigma_m, double gate) {
   // Each signal's phase change less the predicted range change: the receiver clock's change

@@ -89,6 +89,10 @@ Eigen::MatrixXd tdcpCovariance(const TdcpPair& pair);
 /// the others differenced against it. Returns the number of groups with a single signal.
 int formRows(TdcpPair& pair);
 
+/// Leaves out the signal of row `row` (a gate's worst) and re-forms the rows; with fewer than
+/// three rows left the pair keeps none (too few to tell a bad one).
+void dropRowSignal(TdcpPair& pair, long row);
+
 /// Leaves out the signals whose phase change disagrees with the range change the antenna
 /// positions p0_e, p1_e (an estimator's prediction, with `predicted_sigma_m` the uncertainty of
 /// its displacement) give, after the clock change common to the signal's system and band (their

@@ -67,6 +67,8 @@ struct DatasetDescription {
   TimeOffsets time_offsets;  // optional section time_offsets
 
   std::string pathOf(const std::string& name) const { return folder + "/" + name; }
+  /// Raw GNSS of a rover and no base: the single-receiver scheme's data.
+  bool roverAlone() const { return !rover_obs.empty() && base_obs.empty(); }
 };
 
 /// The true calibration of a simulated dataset (truth_calib.yaml).
