@@ -11,7 +11,7 @@ first="${1:-501}"
 count="${2:-4}"
 config=()
 [ -n "${3:-}" ] && config=(--config "$3")
-giocal="$root/build/apps/giocal"
+giocal="${GIOCAL:-$root/build/apps/giocal}"
 preset="$root/config/sim/field.yaml"
 command -v rnx2rtkp >/dev/null || { echo "rnx2rtkp missing: apt-get install rtklib"; exit 1; }
 [ -x "$giocal" ] || { echo "build first: bash scripts/setup.sh"; exit 1; }

@@ -41,7 +41,10 @@ DdEpoch DdEpochBuilder::build(const ObsEpoch& rover, const ObsEpoch& base,
   // The satellites as each receiver saw them (the time tags and pseudo-ranges carry the same
   // receiver clock error, so tag minus range is the transmission time for both).
   const double mask = options_.elevation_mask_deg * M_PI / 180.0;
-  const Topocentric sky(rover_e);
+  const Topocentric sky(rover_e), base_sky(base_e_);
+  const Geodetic rover_geo = geodeticFromEcef(rover_e), base_geo = geodeticFromEcef(base_e_);
+  // No troposphere difference for a rover position not yet known (the model's height range).
+  const bool tropo = std::abs(rover_geo.h) < 1e4 && std::abs(base_geo.h) < 1e4;
   std::vector<std::pair<const SatObs*, const SatObs*>> pairs;
   for (const SatObs& ro : rover.sats) {
     if (std::find(options_.systems.begin(), options_.systems.end(), ro.sat.sys) ==
@@ -62,9 +65,13 @@ DdEpoch DdEpochBuilder::build(const ObsEpoch& rover, const ObsEpoch& base,
     g.sat = ro.sat;
     g.sat_at_rover_e = sr->p_e;
     g.base_range = (sb->p_e - base_e_).norm();
-    double az = 0.0;
+    double az = 0.0, base_el = 0.0;
     sky.elevationAzimuth(sr->p_e, g.el, az);
     if (g.el < mask) continue;
+    base_sky.elevationAzimuth(sb->p_e, base_el, az);
+    if (tropo) {
+      g.tropo_sd = tropoSaastamoinen(rover_geo, g.el) - tropoSaastamoinen(base_geo, base_el);
+    }
     out.geometry.push_back(g);
     out.undiff_variance.push_back(
         {2.0 * options_.code.variance(g.el), 2.0 * options_.phase.variance(g.el)});

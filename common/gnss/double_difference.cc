@@ -8,7 +8,7 @@ double ddRange(const Eigen::Vector3d& rover_e, const SdGeometry& sat, const SdGe
   const Eigen::Vector3d dr = ref.sat_at_rover_e - rover_e;
   const double ri = di.norm(), rr = dr.norm();
   if (d_rover) *d_rover = (-di / ri + dr / rr).transpose();
-  return (ri - sat.base_range) - (rr - ref.base_range);
+  return (ri - sat.base_range + sat.tropo_sd) - (rr - ref.base_range + ref.tropo_sd);
 }
 
 double ddPredict(const DdObservation& o, const std::vector<SdGeometry>& geometry,

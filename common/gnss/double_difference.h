@@ -17,10 +17,15 @@ struct SdGeometry {
   Eigen::Vector3d sat_at_rover_e;  // satellite at the rover's transmission time (Sagnac applied)
   double base_range = 0.0;         // geometric range from the base antenna [m]
   double el = 0.0;                 // elevation at the rover [rad]
+  // Troposphere at the rover minus at the base [m]: a few centimetres per satellite when the two
+  // antennas' heights differ by tens of metres (5 mm of zenith delay per 20 m), which a
+  // kilometre baseline's fixed solution otherwise takes into its height.
+  double tropo_sd = 0.0;
 };
 
-/// DD geometric range (sat - ref, rover - base) and its gradient with respect to the rover antenna
-/// position in ECEF.
+/// DD range (sat - ref, rover - base): geometric, plus the single differences' troposphere; and
+/// its gradient with respect to the rover antenna position in ECEF (the troposphere's is left out:
+/// under 1e-4 m per metre).
 double ddRange(const Eigen::Vector3d& rover_e, const SdGeometry& sat, const SdGeometry& ref,
                Eigen::RowVector3d* d_rover);
 

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <tuple>
 
@@ -24,7 +26,25 @@ struct Result {
   RtkSummary summary;
   Eigen::Vector3d mean_enu = Eigen::Vector3d::Zero();  // of the fixed solutions
   int pos_rows = 0;
+  std::vector<RtkSolution> solutions;
 };
+
+/// 95th percentile of the 3D distance between giocal's and a reference's fixed solutions at the
+/// epochs both fixed (time tags within 50 ms), and how many such epochs there are.
+std::pair<double, size_t> p95ToReference(const std::vector<RtkSolution>& sols,
+                                         const std::string& reference) {
+  std::vector<double> d;
+  const std::vector<PositionFix> ref = readPosFile(reference);
+  for (const RtkSolution& s : sols) {
+    if (s.quality != 1) continue;
+    for (const PositionFix& f : ref) {
+      if (f.quality == 1 && std::abs(f.t - s.t) < 0.05) d.push_back((f.p_e - s.p_e).norm());
+    }
+  }
+  if (d.empty()) return {INFINITY, 0};
+  std::sort(d.begin(), d.end());
+  return {d[static_cast<size_t>(0.95 * static_cast<double>(d.size() - 1))], d.size()};
+}
 
 Result run(RtkJob job, const Geodetic& truth) {
   test::TempDir dir;
@@ -32,6 +52,7 @@ Result run(RtkJob job, const Geodetic& truth) {
   std::vector<RtkSolution> sols;
   Result r;
   r.summary = runRtk(job, &sols);
+  r.solutions = sols;
   const LocalFrame frame(ecefFromGeodetic(truth));
   int n = 0;
   for (const auto& s : sols) {
@@ -120,18 +141,27 @@ TEST(Rtk, GsiRinex2MatchesRtklib) {
   // Mean of RTKLIB's fixed solution (rtklib_reference.pos, 115 epochs).
   const Geodetic rtklib{35.160865960 * kDegToRad, 139.613843021 * kDegToRad, 68.3822};
   const Result r = run(job, rtklib);
+  const auto [p95, common] = p95ToReference(r.solutions, d + "rtklib_reference.pos");
   std::cout << "GSI RTK: " << r.summary.fixed << "/" << r.summary.epochs
-            << " fixed, mean fixed ENU minus RTKLIB " << r.mean_enu.transpose() * 1000 << " mm\n";
+            << " fixed, mean fixed ENU minus RTKLIB " << r.mean_enu.transpose() * 1000
+            << " mm, p95 " << p95 * 1000 << " mm over " << common << " common fixed epochs\n";
   EXPECT_EQ(r.summary.epochs, 120);
-  EXPECT_GE(r.summary.fixed, 114);  // >= 95 % of 120
-  EXPECT_LT(r.mean_enu.head<2>().norm(), 0.02);
+  // Measured 2026-11-27: 114 of 120, p95 4.5 mm and mean 0.9 mm from RTKLIB over the 114 both
+  // fixed (before the rover-base troposphere: p95 16 mm). The last six epochs, five satellites,
+  // fix the right integers but leave 4-6 cm of horizontal sigma, and rtk.max_fix_sigma reports
+  // them as float: calling such fixes fixed made 3-5 % of the simulated fixes under trees more
+  // than 5 cm wrong (docs/results.md, GNSS). RTKLIB gives no solution for five of them.
+  EXPECT_GE(r.summary.fixed, 114);
+  EXPECT_GE(common, 114u);
+  EXPECT_LT(p95, 0.006);
+  EXPECT_LT(r.mean_enu.norm(), 0.004);
 }
 
 // The 5.3 km pair of mixed receivers (Septentrio rover, Trimble NetR9 base with quarter-cycle
-// phase shifts in its header), GPS + Galileo + QZSS: every epoch fixed. The fixed positions sit
-// 27 mm from RTKLIB's GPS + Galileo fixed solution (mean ENU +10, +5, -21 mm; the same with
-// rtk.systems GE, so not QZSS), where the target is 1 cm: asserted as it stands (2026-11-27), so
-// that any drop fails and the gap stays in sight ("Real logs decide").
+// phase shifts in its header), GPS + Galileo + QZSS: every epoch fixed, within 1 cm of RTKLIB's
+// GPS + Galileo fixed solution (measured 2026-11-27: mean ENU -0.5, -2.1, +8.6 mm, p95 12.5 mm per
+// epoch). The rover sits 19 m above the base: without the rover-base troposphere the mean was
+// +10, +5, -18 mm (27 mm p95).
 TEST(Rtk, MixedReceivers5kmFixesEveryEpoch) {
   RtkJob job;
   const std::string d = kData + "cssrlib-static-5km/";
@@ -142,11 +172,35 @@ TEST(Rtk, MixedReceivers5kmFixesEveryEpoch) {
   // Mean of RTKLIB's fixed solution (rtklib_reference.pos, 60 epochs, SOURCE.txt).
   const Geodetic rtklib{35.339325779 * kDegToRad, 139.522173122 * kDegToRad, 65.7105};
   const Result r = run(job, rtklib);
+  const auto [p95, common] = p95ToReference(r.solutions, d + "rtklib_reference.pos");
   std::cout << "5 km RTK: " << r.summary.fixed << "/" << r.summary.epochs
-            << " fixed, mean fixed ENU minus RTKLIB " << r.mean_enu.transpose() * 1000 << " mm\n";
+            << " fixed, mean fixed ENU minus RTKLIB " << r.mean_enu.transpose() * 1000
+            << " mm, p95 " << p95 * 1000 << " mm\n";
   EXPECT_EQ(r.summary.epochs, 60);
   EXPECT_EQ(r.summary.fixed, 60);
-  EXPECT_LT(r.mean_enu.norm(), 0.03);
+  EXPECT_EQ(common, 60u);
+  EXPECT_LT(r.mean_enu.norm(), 0.01);
+  EXPECT_LT(p95, 0.014);
+
+  // The troposphere the double differences carry: the rover, 19 m above the base, sees less of
+  // it, by about 6 mm at the zenith (standard atmosphere), that over sin(elevation) near the
+  // zenith; lower, the two receivers' elevations differ (5.3 km apart) and the slant delays by
+  // centimetres.
+  const BroadcastOrbits orbits(readRinexNav(job.nav.front()));
+  const ObsData rover = readRinexObs(job.rover), base = readRinexObs(job.base);
+  DdEpochBuilder builder(orbits, *job.base_pos, DdOptions{});
+  const DdEpoch ep =
+      builder.build(rover.epochs.front(), base.epochs.front(), ecefFromGeodetic(rtklib));
+  ASSERT_GE(ep.geometry.size(), 10u);
+  int high = 0;
+  for (const SdGeometry& g : ep.geometry) {
+    EXPECT_LT(std::abs(g.tropo_sd), 0.05) << g.sat.str();
+    if (g.el < 60.0 * kDegToRad) continue;
+    EXPECT_LT(g.tropo_sd * std::sin(g.el), -0.004) << g.sat.str();
+    EXPECT_GT(g.tropo_sd * std::sin(g.el), -0.009) << g.sat.str();
+    ++high;
+  }
+  EXPECT_GE(high, 2);
 }
 
 TEST(Rtk, BadInputIsReported) {
