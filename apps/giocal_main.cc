@@ -232,14 +232,16 @@ int runValidateCommand(int argc, char** argv) {
 
 int runReportCommand(int argc, char** argv) {
   po::options_description opts("giocal report");
-  opts.add_options()("run", po::value<std::string>()->required(),
-                     "a calibrate, compare or deadreckon output folder, or a --box-csv file")(
+  opts.add_options()(
+      "run", po::value<std::string>()->required(),
+      "a calibrate, compare, deadreckon or validate output folder, or a --box-csv file")(
       "data", po::value<std::string>()->default_value(""), "the dataset (for its truth)")(
       "out", po::value<std::string>()->required(), "output folder")(
       "overwrite", "replace an earlier report in --out");
   const po::variables_map vm = giocal::parseCommand(
       argc, argv, opts,
-      "giocal report: an HTML page with figures from a calibrate, compare or deadreckon output "
+      "giocal report: an HTML page with figures from a calibrate, compare, deadreckon or validate "
+      "output "
       "folder",
       "giocal report --run /tmp/paper-compare --data /tmp/paper --out /tmp/paper-report");
   giocal::runReport({vm["run"].as<std::string>(), vm["data"].as<std::string>(),

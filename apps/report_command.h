@@ -1,6 +1,6 @@
 // `giocal report --run <dir> [--data <dataset>] --out <dir> [--overwrite]`: an HTML page with
-// figures of a calibrate, compare or deadreckon run (or a Monte Carlo --box-csv file), made by
-// report/giocal_report.py with Debian's python3-matplotlib.
+// figures of a calibrate, compare, deadreckon or validate run (or a Monte Carlo --box-csv file),
+// made by report/giocal_report.py with Debian's python3-matplotlib.
 #pragma once
 
 #include <iosfwd>

@@ -74,6 +74,7 @@ RunValidation validateAtEnd(const DatasetFolder& data, const GiocalConfig& confi
     out.confidence = r.confidence;
     out.better_windows = r.better_windows;
     out.windows = static_cast<int>(r.windows.size());
+    out.per_window = r.windows;
     out.reference = ref.name;
   } catch (const Interrupted&) {
     throw;

@@ -59,14 +59,6 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   const Validation r = validateCalibration(in, trajectory, v);
   progress.clear();
 
-  nlohmann::ordered_json windows = nlohmann::ordered_json::array();
-  for (const ValidationWindow& w : r.windows) {
-    windows.push_back({{"start_s", w.start_s},
-                       {"duration_s", w.duration_s},
-                       {"distance_m", w.distance_m},
-                       {"calibrated_m", w.calibrated_m},
-                       {"guess_m", w.guess_m}});
-  }
   nlohmann::ordered_json j;
   if (job.positions.empty())
     j["files"] = {{"gnss_reference.pos", outputs.close("gnss_reference.pos")}};
@@ -74,7 +66,7 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   j["reference"] = reference;
   j["outage_s"] = job.outage_s;
   j["metric"] = "horizontal MAX error inside each window [m]";
-  j["windows"] = windows;
+  j["windows"] = validationWindowsJson(r.windows);
   j["calibrated"] = r.calibrated_m;
   j["guess"] = r.guess_m;
   j["ratio"] = r.ratio;

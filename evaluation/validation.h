@@ -10,6 +10,7 @@
 
 #include "common/calibration/calibration_inputs.h"
 #include "common/calibration/calibration_options.h"
+#include "common/calibration/calibration_run.h"
 #include "common/calibration/reference_trajectory.h"
 
 namespace giocal {
@@ -21,12 +22,6 @@ struct ValidationJob {
   CalibrationOptions options;
   bool reference_has_attitude = false;   // a GNSS solution has none
   std::function<void(double)> progress;  // the share of the windows done (may throw to stop)
-};
-
-struct ValidationWindow {
-  double start_s = 0.0;  // seconds after the first rover epoch
-  double duration_s = 0.0, distance_m = 0.0;
-  double calibrated_m = 0.0, guess_m = 0.0;  // horizontal MAX error inside the window
 };
 
 struct Validation {

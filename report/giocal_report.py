@@ -2,10 +2,12 @@
 """giocal report: a self-contained HTML page with PNG figures of a giocal run's outputs.
 
 Usage: giocal_report.py <run dir> <out dir> [<dataset dir>]
-The run dir is what `giocal calibrate`, `compare` or `deadreckon` wrote (or a Monte Carlo
---box-csv file). Figures: calibration convergence with its +-3 sigma band (both estimators for
+The run dir is what `giocal calibrate`, `compare`, `deadreckon` or `validate` wrote (or a Monte
+Carlo --box-csv file). Figures: calibration convergence with its +-3 sigma band (both estimators for
 compare; the truth when known), the horizontal trajectory, dead-reckoning error over time and
-distance, NEES over time with its chi-square band (truth known), Monte Carlo box plots. Tables:
+distance, NEES over time with its chi-square band (truth known), the validation's windows (the
+calibration's and the guess's dead-reckoning error in each, with the verdict), Monte Carlo box
+plots. Tables:
 the run's summary.json, every number as the file has it. Called by `giocal report`; needs Debian's
 python3-matplotlib.
 """
@@ -148,6 +150,36 @@ def dr_error_figure(err, out):
     fig.tight_layout()
     fig.savefig(out, dpi=90)
     plt.close(fig)
+
+
+def validation_figure(entries, out):
+    """entries: (name, validation dict with a list of windows, verdict, ratio, confidence)."""
+    fig, axes = plt.subplots(1, len(entries), figsize=(5.5 * len(entries), 4), squeeze=False)
+    for ax, (name, windows, verdict, ratio, confidence) in zip(axes[0], entries):
+        x = list(range(len(windows)))
+        ax.bar([i - 0.2 for i in x], [w["calibrated_m"] for w in windows], 0.4,
+               label="calibration")
+        ax.bar([i + 0.2 for i in x], [w["guess_m"] for w in windows], 0.4, label="initial guess")
+        ax.set_xticks(x)
+        ax.set_xticklabels([f"+{w['start_s']:.0f} s\n{w['distance_m']:.0f} m" for w in windows],
+                           fontsize=8)
+        ax.set_ylabel("horizontal MAX error in the window [m]")
+        ax.set_title(f"{name}: {verdict} (ratio {ratio:.2f}, confidence {confidence:.2f})",
+                     fontsize=10)
+        ax.grid(True, axis="y", alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Validation: dead reckoning through GNSS outage windows")
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    plt.close(fig)
+
+
+def validation_entry(name, v):
+    """A figure entry from a summary's validation (calibrate's "validation" or validate's own)."""
+    windows = v.get("per_window", v.get("windows"))
+    if not isinstance(windows, list) or not windows or "verdict" not in v:
+        return None
+    return (name, windows, v["verdict"], v.get("ratio", 0.0), v.get("confidence", 0.0))
 
 
 def read_scenes(dataset):
@@ -295,12 +327,26 @@ def main(argv):
         if os.path.exists(os.path.join(run, "calibration.csv")):
             calibrate_dirs = [("run", run)]
         runs = [(n, read_csv(os.path.join(d, "calibration.csv"))) for n, d in calibrate_dirs]
+        validations = []
         for n, d in calibrate_dirs:
             with open(os.path.join(d, "summary.json")) as f:
                 summary = json.load(f)
             tables.append(table(summary, f"{summary.get('estimator', n)}: summary.json"))
-            if truth is None and "error" in summary and "final" in summary:
-                pass  # errors are in the table; the truth itself comes from --data
+            entry = validation_entry(summary.get("estimator", n), summary.get("validation", {}))
+            if entry:
+                validations.append(entry)
+        summary_path = os.path.join(run, "summary.json")
+        if not calibrate_dirs and os.path.exists(summary_path):  # a validate folder
+            with open(summary_path) as f:
+                summary = json.load(f)
+            entry = validation_entry("validate", summary)
+            if entry:
+                validations.append(entry)
+                tables.append(table(summary, "validate: summary.json"))
+        if validations:
+            validation_figure(validations, os.path.join(out, "validation.png"))
+            figures.append(("validation.png", "Validation: " + "; ".join(
+                f"{n} {v}" for n, _, v, _, _ in validations)))
         if runs:
             convergence_figure(runs, truth, os.path.join(out, "convergence.png"))
             figures.append(("convergence.png", "Calibration convergence (±3σ)"))
@@ -340,7 +386,7 @@ def main(argv):
             trajectory_figure(tracks, os.path.join(out, "trajectory.png"))
             figures.append(("trajectory.png", "Horizontal trajectory"))
     if not figures:
-        print(f"giocal report: {run}: no calibrate, compare or deadreckon outputs found",
+        print(f"giocal report: {run}: no calibrate, compare, deadreckon or validate outputs found",
               file=sys.stderr)
         return 1
     body = "".join(f'<figure><img src="{f}" alt="{html.escape(c)}"><figcaption>{html.escape(c)}'

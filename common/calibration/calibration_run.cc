@@ -236,6 +236,7 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
                          {"windows", v.windows},
                          {"confidence", v.confidence},
                          {"reference", v.reference}};
+      j["validation"]["per_window"] = validationWindowsJson(v.per_window);
     }
   }
   j["counters"] = run.counters;
@@ -265,6 +266,18 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
   std::ostringstream out;
   out << std::setprecision(12) << j.dump(2) << "\n";
   return out.str();
+}
+
+nlohmann::ordered_json validationWindowsJson(const std::vector<ValidationWindow>& windows) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const ValidationWindow& w : windows) {
+    out.push_back({{"start_s", w.start_s},
+                   {"duration_s", w.duration_s},
+                   {"distance_m", w.distance_m},
+                   {"calibrated_m", w.calibrated_m},
+                   {"guess_m", w.guess_m}});
+  }
+  return out;
 }
 
 }  // namespace giocal

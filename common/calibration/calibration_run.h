@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +46,13 @@ struct CalibrationEstimate {
   Eigen::Matrix<double, 8, 1> sigma() const;
 };
 
+/// One GNSS outage window of a validation (evaluation/validation.h).
+struct ValidationWindow {
+  double start_s = 0.0;  // seconds after the first rover epoch
+  double duration_s = 0.0, distance_m = 0.0;
+  double calibrated_m = 0.0, guess_m = 0.0;  // horizontal MAX error inside the window
+};
+
 /// What `calibrate` found when it validated its own calibration at its end (evaluation/
 /// validation.h): dead reckoning through GNSS outage windows with it and with the guess.
 struct RunValidation {
@@ -53,7 +61,12 @@ struct RunValidation {
   double calibrated_m = 0.0, guess_m = 0.0, ratio = 0.0, confidence = 0.0;
   int better_windows = 0, windows = 0;
   std::string reference;  // what the windows were checked against
+  std::vector<ValidationWindow> per_window;
 };
+
+/// The windows as summary.json lists them (`validate`'s "windows", `calibrate`'s
+/// "validation.per_window").
+nlohmann::ordered_json validationWindowsJson(const std::vector<ValidationWindow>& windows);
 
 struct CalibrationRun {
   std::string estimator;                      // "ekf" or "fgo"

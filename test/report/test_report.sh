@@ -25,6 +25,19 @@ awk -F, 'NR == 1 { print "t,t_d_odo,sd_t_d_odo"; next } \
 grep -q "scenes shaded: open_sky, more_trees" "$work/rep/index.html" || fail "scenes not named"
 "$giocal" report --run "$work/dr" --data "$work/data" --out "$work/rep_dr" > /dev/null
 
+# A calibration validated at its end, and `validate` on it: the windows drawn with the verdict.
+"$giocal" calibrate --data "$work/data" --out "$work/cal" --quiet > /dev/null
+"$giocal" validate --data "$work/data" --run "$work/cal" --outage 30 --windows 3 --out "$work/val" \
+  --quiet > /dev/null
+"$giocal" report --run "$work/cal" --data "$work/data" --out "$work/rep_cal" > /dev/null
+"$giocal" report --run "$work/val" --out "$work/rep_val" > /dev/null
+for run in cal val; do
+  verdict=$(/usr/bin/python3 -c "import json, sys; s = json.load(open(sys.argv[1])); \
+print(s.get('validation', s)['verdict'])" "$work/$run/summary.json")
+  grep -q "Validation: [a-z]* $verdict" "$work/rep_$run/index.html" \
+    || fail "rep_$run: the validation's verdict ($verdict) not on the page"
+done
+
 # A run from positions only (the LC scheme, the real Husky's fixes): no satellites, no PDOP.
 "$giocal" import --bag "$src/data/real/husky-robot-localization/test1.bag" --out "$work/husky" \
   > /dev/null
@@ -35,7 +48,7 @@ printf 'calibration:\n  lc:\n    use_height: 0\n' > "$work/lc.yaml"
   || fail "report of an LC run from positions only"
 
 for f in rep/convergence.png rep/nees.png rep/gnss.png rep/trajectory.png rep/odometer_delay.png \
-         rep_dr/dr_error.png \
+         rep_dr/dr_error.png rep_cal/validation.png rep_val/validation.png \
          rep_dr/trajectory.png rep_lc/gnss.png rep_lc/convergence.png; do
   [ -f "$work/$f" ] || fail "$f missing"
   [ "$(stat -c %s "$work/$f")" -gt 10000 ] || fail "$f is $(stat -c %s "$work/$f") bytes"
@@ -127,7 +140,7 @@ mkdir -p "$work/empty"
 if "$giocal" report --run "$work/empty" --out "$work/rep_empty" > "$work/msg" 2>&1; then
   fail "a folder without outputs was accepted"
 fi
-grep -q "no calibrate, compare or deadreckon outputs found" "$work/msg" || fail "$(cat "$work/msg")"
+grep -q "no calibrate, compare, deadreckon or validate outputs found" "$work/msg" || fail "$(cat "$work/msg")"
 [ ! -e "$work/rep_empty/index.html" ] || fail "a failed report left index.html"
 if "$giocal" report --run "$work/cmp" --out "$work/rep" > "$work/msg" 2>&1; then
   fail "an earlier report was overwritten without --overwrite"
