@@ -20,6 +20,7 @@ namespace {
 
 constexpr double kSettleS = 10.0;    // after the first calibration row, before a window starts
 constexpr double kClearRatio = 0.1;  // a mean ratio within 10 % of 1 is "no better"
+constexpr double kGapStepS = 0.5;    // how a window's start steps over a gap in the reference
 
 /// The GPS time the run's calibration.csv@<seconds> counts from (summary.json's first rover
 /// epoch), else the data's.
@@ -66,12 +67,26 @@ std::vector<double> validationWindowStarts(const CalibrationInputs& in,
                              " s outage); this one has " +
                              text(std::min(reference.end(), in.imu.back().t) - t_rover) + " s");
   }
-  // Windows do not overlap: as many as fit, up to job.windows, spread evenly.
+  // Windows do not overlap: as many as fit, up to job.windows, spread evenly. A window planned
+  // where the reference has a gap (no RTK fix under trees) starts at the gap's end instead, and
+  // one that no longer fits before the end is left out.
   const int fit = 1 + static_cast<int>(std::floor((last - first) / job.outage_s));
   const int n = std::max(1, std::min(job.windows, fit));
   std::vector<double> starts;
-  for (int k = 0; k < n; ++k)
-    starts.push_back(n == 1 ? first : first + (last - first) * k / (n - 1));
+  double earliest = first;
+  for (int k = 0; k < n; ++k) {
+    double t = std::max(earliest, n == 1 ? first : first + (last - first) * k / (n - 1));
+    while (t <= last && !reference.at(t)) t += kGapStepS;
+    if (t > last) break;
+    starts.push_back(t);
+    earliest = t + job.outage_s;
+  }
+  if (starts.empty()) {
+    throw std::runtime_error(
+        "validate: the GNSS reference has no solution where a window could "
+        "start (from +" +
+        text(first - t_rover) + " to +" + text(last - t_rover) + " s)");
+  }
   return starts;
 }
 

@@ -36,9 +36,11 @@ struct Validation {
   double confidence = 0.0;
 };
 
-/// The earliest window start the run allows (its first calibration.csv row, plus a margin) and
-/// the latest (the reference's end minus an outage), seconds after the first rover epoch.
-/// Throws std::runtime_error saying how much drive it needs when not even one window fits.
+/// The windows' starts [GPS s]: spread evenly from the earliest the run allows (its first
+/// calibration.csv row, plus a margin) to the latest (the reference's end minus an outage), each
+/// moved past a gap in the reference it would start in. Throws std::runtime_error saying how much
+/// drive it needs when not even one window fits, or that the reference has no solution to start
+/// one at.
 std::vector<double> validationWindowStarts(const CalibrationInputs& in,
                                            const ReferenceTrajectory& reference,
                                            double first_calibration_s, const ValidationJob& job);
