@@ -28,6 +28,7 @@ set(GIOCAL_SLOW_TESTS
   CoarseMounting.SimulatedDrivesWithTheImuFarOff
   I2navImport.ASimulatedDriveRoundTripsAndCalibratesWithItsSpeedOnlyOdometer
   LooselyCoupled.BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm
+  LooselyCoupled.BothEstimatorsAreConsistentOverTenSeeds
 )
 set(GIOCAL_REAL_TESTS
   Tdcp.TheRowsGradientsAreTheNumericOnes

@@ -102,7 +102,7 @@ TEST(SimulateTrajectory, TheSimulatorsOwnGnssAndAntennaPathGiveItsDriveAndCalibr
     EXPECT_LT(std::abs(e.s_w), 4.0 * sd[1]) << e.s_w;
     EXPECT_LT(e.p_b_m.head<2>().norm(), 4.0 * sd.segment<2>(2).norm()) << e.p_b_m.transpose();
     EXPECT_LT(std::abs(e.rpy.z()) * kRadToDeg, 4.0 * sd[7]) << e.rpy.transpose();
-    EXPECT_LT(e.nees7, 30.0);
+    EXPECT_LT(e.nees7, 24.32);  // chi-square, 7 dof, 99.9 % (measured 13.1 and 12.7)
   }
 }
 
