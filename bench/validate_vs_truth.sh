@@ -5,8 +5,11 @@
 # truth.csv, with the calibration as it stood when the window began and with the guess; the
 # truth's verdict follows validate's rule (mean ratio below 0.9 and most windows better: better;
 # above 1.1 and most worse: worse; else no better). Prints both verdicts per seed and the count
-# that agree.
-# Usage: bench/validate_vs_truth.sh [first seed, default 7101] [seeds, default 10] [ekf|fgo]
+# that agree. GUESS=truth starts each drive from its true calibration instead (dataset.yaml's
+# initial_calibration replaced, its sigmas kept): the calibration cannot do much better than
+# such a guess, and both verdicts should say "no better".
+# Usage: [GUESS=truth] bench/validate_vs_truth.sh [first seed, default 7101] [seeds, default 10]
+#        [ekf|fgo]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-7101}"
@@ -22,6 +25,28 @@ for seed in $(seq "$first" $((first + count - 1))); do
   d="$work/data$seed"
   run="$work/cal$seed"
   "$giocal" simulate --config "$root/config/sim/field.yaml" --out "$d" --seed "$seed" > /dev/null
+  if [ "${GUESS:-}" = truth ]; then
+    /usr/bin/python3 - "$d" <<'PY'
+import re, sys
+d = sys.argv[1]
+truth = {}
+for line in open(f"{d}/truth_calib.yaml"):
+    m = re.match(r"(s_v|s_w|p_b_m|q_b_m|rpy_b_m_deg): (.*)", line)
+    if m:
+        truth[m.group(1)] = m.group(2)
+out, inside = [], False
+for line in open(f"{d}/dataset.yaml"):
+    if line.startswith("initial_calibration:"):
+        inside = True
+    elif inside and not line.startswith(" "):
+        inside = False
+    m = re.match(r"(  )(s_v|s_w|p_b_m|q_b_m|rpy_b_m_deg): ", line)
+    if inside and m:
+        line = f"  {m.group(2)}: {truth[m.group(2)]}\n"
+    out.append(line)
+open(f"{d}/dataset.yaml", "w").write("".join(out))
+PY
+  fi
   code=0
   "$giocal" calibrate --data "$d" --estimator "$estimator" --out "$run" --quiet > /dev/null \
     || code=$?
