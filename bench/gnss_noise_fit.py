@@ -7,6 +7,8 @@ satellite, the ratio of the residuals to the sigma giocal assumes today (chi2/do
 the undifferenced variance f(el) = a^2 + b^2 / sin^2(el) (RTKLIB's form) by least squares on the
 squared residuals, trimmed at 5 sigma twice.
 Usage: bench/gnss_noise_fit.py [--phase 0.003] [--code 0.3] name=residuals.csv ...
+       bench/gnss_noise_fit.py --cmc [--code 0.3] name=cmc.csv ...   (a receiver alone: code
+       minus carrier per arc, a line per arc taken out; RMS by elevation and by C/N0, the same fit)
 """
 import csv
 import math
@@ -49,17 +51,81 @@ def fit(rows):
     return math.sqrt(a2), math.sqrt(b2), len(rows) - len(keep)
 
 
+def cmc_rows(path):
+    """Code-minus-carrier residuals: per satellite and band, arcs cut at a loss of lock, a gap over
+    1.5 s or a jump over 5 m; a straight line in time fitted out of each arc of 20 or more."""
+    arcs, last = {}, {}
+    out = []
+    for d in load(path):
+        key = (d["sat"], d["band"])
+        t, v = float(d["t"]), float(d["cmc_m"])
+        prev = last.get(key)
+        if prev is None or int(d["lli"]) & 1 or t - prev[0] > 1.5 or abs(v - prev[1]) > 5.0:
+            arcs.setdefault(key, []).append([])
+        arcs[key][-1].append((t, v, float(d["el_deg"]), float(d["cn0"])))
+        last[key] = (t, v)
+    for arc_list in arcs.values():
+        for arc in arc_list:
+            if len(arc) < 20:
+                continue
+            n = len(arc)
+            mt = sum(a[0] for a in arc) / n
+            mv = sum(a[1] for a in arc) / n
+            stt = sum((a[0] - mt) ** 2 for a in arc)
+            slope = sum((a[0] - mt) * (a[1] - mv) for a in arc) / stt if stt > 0 else 0.0
+            k = math.sqrt(n / (n - 2.0))  # two parameters fitted out
+            for t, v, el, cn0 in arc:
+                out.append(((v - mv - slope * (t - mt)) * k, math.radians(el), cn0))
+    return out
+
+
+def cmc_main(files, s0):
+    bins = [10, 15, 20, 30, 45, 60, 90]
+    for name, path in files:
+        rows = [r for r in cmc_rows(path) if r[1] > math.radians(10)]
+        if not rows:
+            continue
+        chi = [r * r / current_var(s0, math.degrees(el)) for r, el, _ in rows]
+        line = f"{name:8s} code-minus-carrier rows {len(rows):6d}  chi2/dof at s0={s0:g}: "
+        line += f"{sum(chi) / len(chi):6.2f}   RMS per el bin:"
+        for lo, hi in zip(bins[:-1], bins[1:]):
+            sel = [r for r, el, _ in rows if lo <= math.degrees(el) < hi]
+            if sel:
+                line += f" {lo}-{hi}: {math.sqrt(sum(r * r for r in sel) / len(sel)):.2f} m"
+        line += "   per C/N0:"
+        for lo, hi in ((0, 30), (30, 35), (35, 40), (40, 45), (45, 60)):
+            sel = [r for r, _, c in rows if lo <= c < hi]
+            if len(sel) > 20:
+                line += f" {lo}-{hi}: {math.sqrt(sum(r * r for r in sel) / len(sel)):.2f} m"
+        # undifferenced: r^2 = a^2 + b^2 / sin^2(el), least squares
+        xs = [1.0 / math.sin(el) ** 2 for _, el, _ in rows]
+        ys = [r * r for r, _, _ in rows]
+        n = len(xs)
+        mx, my = sum(xs) / n, sum(ys) / n
+        sxx = sum((x - mx) ** 2 for x in xs)
+        b2 = max(sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx, 0.0) if sxx else 0.0
+        a2 = max(my - b2 * mx, 0.0)
+        line += f"   fit a {math.sqrt(a2):.3f} m, b {math.sqrt(b2):.3f} m"
+        print(line)
+
+
 def main():
     s0 = {"phase": 0.003, "code": 0.3}
     files = []
+    cmc = False
     args = sys.argv[1:]
     while args:
         a = args.pop(0)
-        if a in ("--phase", "--code"):
+        if a == "--cmc":
+            cmc = True
+        elif a in ("--phase", "--code"):
             s0[a[2:]] = float(args.pop(0))
         else:
             name, path = a.split("=", 1)
             files.append((name, path))
+    if cmc:
+        cmc_main(files, s0["code"])
+        return
     bins = [10, 15, 20, 30, 45, 60, 90]
     for name, path in files:
         data = load(path)

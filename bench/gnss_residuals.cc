@@ -4,6 +4,9 @@
 // one wavelength: at a fixed position good to centimetres the DD ambiguity is the nearest integer.
 // Usage: giocal_gnss_residuals --rover R --base B --nav N [--nav N2] --base-pos x,y,z
 //        --pos fixed.pos [--frequencies 2] > residuals.csv
+// With --rover and --nav alone (no base): code minus carrier of every signal with both, with its
+// elevation, C/N0 and loss-of-lock flag, for the code noise of a receiver without a base (the
+// constant ambiguity and the slow ionosphere are taken out per arc by gnss_noise_fit.py --cmc).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -11,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "common/gnss/atmosphere.h"
 #include "common/gnss/dd_epoch.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/pos_reader.h"
@@ -43,6 +47,30 @@ int main(int argc, char** argv) {
       std::cerr << "giocal_gnss_residuals: unknown option " << k << "\n";
       return 2;
     }
+  }
+  if (!rover_path.empty() && !nav_paths.empty() && base_path.empty()) {
+    std::vector<NavData> navs;
+    for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
+    const BroadcastOrbits orbits(mergeNav(navs));
+    const ObsData rover = readRinexObs(rover_path);
+    const Eigen::Vector3d p = rover.header.approx_position;
+    const Topocentric sky(p);
+    std::printf("t,sat,band,el_deg,cn0,lli,cmc_m\n");
+    for (const ObsEpoch& r : rover.epochs) {
+      for (const SatObs& so : r.sats) {
+        for (const SignalObs& sig : so.signals) {
+          if (std::isnan(sig.P) || std::isnan(sig.L)) continue;
+          const auto at = orbits.atReception(so.sat, r.t, sig.P, sig.band, p);
+          const double f = carrierFrequency(so.sat.sys, sig.band);
+          if (!at || f <= 0.0) continue;
+          double el = 0.0, az = 0.0;
+          sky.elevationAzimuth(at->p_e, el, az);
+          std::printf("%.3f,%s,%c,%.2f,%.1f,%d,%.4f\n", r.t, so.sat.str().c_str(), sig.band,
+                      el * 180.0 / M_PI, sig.S, sig.lli, sig.P - sig.L * kSpeedOfLight / f);
+        }
+      }
+    }
+    return 0;
   }
   if (rover_path.empty() || base_path.empty() || nav_paths.empty() || pos_path.empty() ||
       base_e.isZero()) {
