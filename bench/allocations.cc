@@ -4,14 +4,20 @@
 // during which a rover epoch left the calibrator's queue did that epoch's work and counts for the
 // epoch; the others count for their sample. The first third of the drive (initialization, the
 // first windows) is left out. Prints the mean and the largest count per kind, per estimator.
-// Usage: giocal_allocations [--preset config/sim/paper.yaml] [--seed N]
+// With --where: also where the IMU and odometer samples' allocations come from (the EKF's), as
+// the most frequent call stacks (symbols need the -rdynamic this target is linked with).
+// Usage: giocal_allocations [--preset config/sim/paper.yaml] [--seed N] [--where]
+#include <execinfo.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "common/calibration/calibration_inputs.h"
 #include "replay/estimator_factory.h"
@@ -19,17 +25,34 @@
 
 namespace {
 std::atomic<long long> g_allocations{0};
+// --where: the stacks of the allocations inside the call being counted (a fixed buffer, filled
+// without allocating; backtrace() is primed before the first count).
+constexpr int kDepth = 8, kStacks = 4096;
+bool g_recording = false;
+int g_recorded = 0;
+void* g_stacks[kStacks][kDepth];
+int g_depths[kStacks];
+
+__attribute__((noinline)) void record() {
+  if (!g_recording || g_recorded >= kStacks) return;
+  g_recording = false;  // backtrace() itself must not recurse into here
+  g_depths[g_recorded] = backtrace(g_stacks[g_recorded], kDepth);
+  ++g_recorded;
+  g_recording = true;
+}
 }  // namespace
 
 // Every allocation of the process goes through these (the bench's own included, which is why
 // only the calls' differences are read).
 void* operator new(std::size_t n) {
   ++g_allocations;
+  record();
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
 void* operator new[](std::size_t n) {
   ++g_allocations;
+  record();
   if (void* p = std::malloc(n ? n : 1)) return p;
   throw std::bad_alloc();
 }
@@ -56,18 +79,26 @@ struct Tally {
 
 struct Tallies {
   Tally imu, odom, epoch;
+  std::map<std::vector<void*>, long long> stacks;  // --where: sample calls' allocation stacks
 };
 
-Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from) {
+Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from, bool where) {
   Tallies t;
   size_t ko = 0, kr = 0, kb = 0;
   const auto counted = [&](Tally& own, double at, const auto& call) {
     const size_t pending = c.health().pending_epochs;  // health() allocates: outside the count
     const long long before = g_allocations.load();
+    g_recorded = 0;
+    g_recording = where && at >= steady_from;
     call();
+    g_recording = false;
     const long long n = g_allocations.load() - before;
     if (at < steady_from) return;
-    (c.health().pending_epochs < pending ? t.epoch : own).add(n);
+    const bool epoch = c.health().pending_epochs < pending;
+    (epoch ? t.epoch : own).add(n);
+    if (epoch) return;
+    for (int k = 0; k < g_recorded; ++k)
+      ++t.stacks[std::vector<void*>(g_stacks[k] + 2, g_stacks[k] + g_depths[k])];
   };
   Tally ignored;
   for (const ImuSample& s : in.imu) {
@@ -90,7 +121,32 @@ Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from) {
 
 }  // namespace
 
+void printStacks(const std::map<std::vector<void*>, long long>& stacks) {
+  std::vector<std::pair<long long, const std::vector<void*>*>> order;
+  for (const auto& [stack, n] : stacks) order.push_back({n, &stack});
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (size_t k = 0; k < std::min<size_t>(order.size(), 8); ++k) {
+    std::printf("  %lld allocations from:\n", order[k].first);
+    const std::vector<void*>& frames = *order[k].second;
+    char** names = backtrace_symbols(frames.data(), static_cast<int>(frames.size()));
+    for (size_t f = 0; f < frames.size(); ++f) std::printf("    %s\n", names ? names[f] : "?");
+    std::free(names);
+  }
+}
+
 int main(int argc, char** argv) {
+  bool where = false;
+  for (int k = 1; k < argc; ++k) {
+    if (std::strcmp(argv[k], "--where") == 0) {
+      where = true;
+      for (int j = k; j + 1 < argc; ++j) argv[j] = argv[j + 1];
+      --argc;
+      break;
+    }
+  }
+  void* prime[1];
+  backtrace(prime, 1);  // loads what backtrace() needs before anything is counted
   const bench::PresetSeed ps = bench::presetAndSeed(argc, argv);
   CalibrationInputs in = bench::simulatedInputs(ps, "giocal_allocations");
   in.description.truth.clear();  // no live check against a truth: robot work only
@@ -104,7 +160,7 @@ int main(int argc, char** argv) {
   for (const char* est : {"ekf", "fgo"}) {
     auto c = makeCalibrator(est, in.description, in.base_e, CalibrationOptions{}, {}, nullptr);
     c->addNavigation(in.nav);
-    const Tallies t = feed(in, *c, steady_from);
+    const Tallies t = feed(in, *c, steady_from, where && std::strcmp(est, "ekf") == 0);
     c->finish();
     for (const auto& [name, tally] : {std::pair<const char*, const Tally&>{"IMU sample", t.imu},
                                       {"odometer sample", t.odom},
@@ -112,6 +168,7 @@ int main(int argc, char** argv) {
       std::printf("%-4s %-16s %10lld %12.1f %10lld\n", est, name, tally.calls, tally.mean(),
                   tally.worst);
     }
+    if (!t.stacks.empty()) printStacks(t.stacks);
   }
   return 0;
 }

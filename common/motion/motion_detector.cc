@@ -12,7 +12,7 @@ void MotionDetector::Window<T>::add(double t, const T& value, double length) {
     samples.clear();
     sum = sum - sum;
   }
-  samples.emplace_back(t, value);
+  samples.push_back({t, value});
   sum += value;
   while (!samples.empty() && samples.front().first < t - length) {
     sum -= samples.front().second;

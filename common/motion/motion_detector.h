@@ -10,7 +10,9 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <deque>
+#include <utility>
+
+#include "common/containers/ring_queue.h"
 
 namespace giocal {
 
@@ -65,7 +67,7 @@ class MotionDetector {
  private:
   template <typename T>
   struct Window {
-    std::deque<std::pair<double, T>> samples;  // (t, value)
+    RingQueue<std::pair<double, T>> samples;  // (t, value)
     T sum{};
     void add(double t, const T& value, double length);
     bool full(double length) const;

@@ -4,11 +4,10 @@
 #pragma once
 
 #include <cmath>
-#include <deque>
 #include <functional>
-#include <iterator>
 #include <utility>
-#include <vector>
+
+#include "common/containers/ring_queue.h"
 
 namespace giocal {
 
@@ -23,9 +22,9 @@ class ReorderBuffer {
     // Kept sorted, inserted after every entry at or before t (ties stay in arrival order). Data
     // mostly arrive in order, so the search from the back ends at once; a heap moved the large
     // data a log(n) times per datum.
-    auto at = items_.end();
-    while (at != items_.begin() && std::prev(at)->first > t) --at;
-    items_.emplace(at, t, std::move(item));
+    std::size_t at = items_.size();
+    while (at > 0 && items_[at - 1].first > t) --at;
+    items_.insert(at, {t, std::move(item)});
     newest_ = std::max(newest_, t);
     return true;
   }
@@ -45,7 +44,7 @@ class ReorderBuffer {
  private:
   double lag_;
   double newest_ = -INFINITY, released_t_ = -INFINITY;
-  std::deque<std::pair<double, T>> items_;  // in time order
+  RingQueue<std::pair<double, T>> items_;  // in time order
 };
 
 }  // namespace giocal
