@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <deque>
 #include <type_traits>
 #include <vector>
 
+#include "common/containers/ring_queue.h"
 #include "common/online/convergence.h"
 #include "common/online/latency_histogram.h"
 #include "common/online/reorder_buffer.h"
@@ -10,6 +12,36 @@
 
 namespace giocal {
 namespace {
+
+TEST(RingQueue, KeepsOrderThroughWrapsGrowthAndInserts) {
+  RingQueue<int> q;
+  std::deque<int> expected;  // the reference
+  for (int k = 0; k < 1000; ++k) {
+    q.push_back(k);
+    expected.push_back(k);
+    if (k % 3 == 0) {  // a late item two places from the back
+      const size_t at = q.size() >= 2 ? q.size() - 2 : 0;
+      q.insert(at, -k);
+      expected.insert(expected.begin() + static_cast<long>(at), -k);
+    }
+    while (q.size() > 20) {  // a bounded window: the front leaves as the back grows
+      ASSERT_EQ(q.front(), expected.front());
+      q.pop_front();
+      expected.pop_front();
+    }
+    ASSERT_EQ(q.size(), expected.size());
+    for (size_t i = 0; i < q.size(); ++i) ASSERT_EQ(q[i], expected[i]) << k << " " << i;
+    ASSERT_EQ(q.back(), expected.back());
+  }
+  q.clear();
+  EXPECT_TRUE(q.empty());
+  // Items that own memory leave nothing behind when they leave the queue.
+  RingQueue<std::vector<double>> v;
+  v.push_back(std::vector<double>(100, 1.0));
+  v.push_back(std::vector<double>(5, 2.0));
+  v.pop_front();
+  EXPECT_EQ(v.front(), std::vector<double>(5, 2.0));
+}
 
 TEST(ReorderBuffer, ReleasesInTimeOrderAfterTheLagAndRefusesThePast) {
   ReorderBuffer<int> b(0.5);
