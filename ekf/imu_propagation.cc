@@ -1,8 +1,8 @@
 #include "ekf/imu_propagation.h"
 
 #include <Eigen/LU>
+#include <array>
 #include <optional>
-#include <vector>
 
 #include "common/math/rotation.h"
 
@@ -46,16 +46,17 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
   // Only the navigation rows of Phi differ from identity: P' = Phi P Phi^T touches the navigation
   // rows and columns only, at O(15 n) instead of O(n^3). G: those rows over the navigation
   // states, then the gyro tilt's when it is estimated.
-  std::vector<int> idx;  // error-state index of each column of G
+  std::array<int, 17> idx{};  // error-state index of each column of G (no allocation per call)
+  int used = 0;
   for (const StateKey& key : {state::kP, state::kQ, state::kV, state::kBa, state::kBg}) {
-    for (int k = 0; k < 3; ++k) idx.push_back(s.offset(key) + k);
+    for (int k = 0; k < 3; ++k) idx[static_cast<size_t>(used++)] = s.offset(key) + k;
   }
   const int m = tilt ? 17 : 15;
   Eigen::MatrixXd G(15, m);
   G.leftCols<15>() = -Jj_inv * Ji;
   if (tilt) {
     G.rightCols<2>() = -Jj_inv * r.J_tilt;
-    for (int k = 0; k < 2; ++k) idx.push_back(s.offset(state::kGyroTilt) + k);
+    for (int k = 0; k < 2; ++k) idx[static_cast<size_t>(used++)] = s.offset(state::kGyroTilt) + k;
   }
   Eigen::MatrixXd& P = s.covariance();
   const int n = s.dim();

@@ -81,7 +81,7 @@ struct CalibrationRun {
   int fixed_epochs = 0;        // of those, epochs with validated ambiguity fixes
   std::string p_b_m_z;         // how the unobservable p_b_m.z was treated
   std::map<std::string, double> initialization;  // static window, heading baseline and sigma
-  std::map<std::string, long> counters;          // Counter names -> tallies
+  CounterMap counters;                           // Counter names -> tallies
   std::map<std::string, double> timing;          // wall time of parts of the run [s]
   std::map<std::string, double> converged_at;    // parameter -> data time it converged [s]
   // The odometer's delay against the IMU seen in the yaw rate both measure, after the dataset's
@@ -105,7 +105,12 @@ struct CalibrationRun {
   std::string status = "ok";
 
   double fixRate() const { return gnss_epochs ? double(fixed_epochs) / gnss_epochs : 0.0; }
-  void count(Counter c, long n = 1) { counters[counterName(c)] += n; }
+  void count(Counter c, long n = 1) {
+    const char* name = counterName(c);
+    auto it = counters.find(name);
+    if (it == counters.end()) it = counters.emplace(name, 0).first;
+    it->second += n;
+  }
   long counter(Counter c) const;
   /// Adds a warning; after kMaxWarnings the rest are only counted as omitted.
   void warn(const std::string& w);

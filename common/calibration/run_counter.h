@@ -1,6 +1,10 @@
 // Counter: the named tallies every calibration run keeps (the keys of summary.json's "counters").
 #pragma once
 
+#include <functional>
+#include <map>
+#include <string>
+
 namespace giocal {
 
 enum class Counter {
@@ -36,5 +40,9 @@ enum class Counter {
 
 /// The counter's key in summary.json ("odometer_intervals", ...).
 const char* counterName(Counter c);
+
+/// Counter names -> tallies. Looked up by a name's characters (std::less<>): a std::string key
+/// made for each look-up allocates for names over 15 characters, three times per odometer update.
+using CounterMap = std::map<std::string, long, std::less<>>;
 
 }  // namespace giocal

@@ -12,6 +12,7 @@ MeasurementRows linearize(const MeasurementModel& model, const std::vector<Block
                                 " bindings for " + std::to_string(blocks.size()) + " blocks");
   }
   std::vector<const double*> params;
+  params.reserve(bindings.size());  // one allocation, not one per doubling
   for (const auto& b : bindings) params.push_back(b.value);
   MeasurementRows rows;
   std::vector<Eigen::MatrixXd> J;

@@ -50,7 +50,7 @@ struct CalibratorHealth {
   double t_data = 0.0;                 // newest datum received [s]
   std::vector<std::string> converged;  // parameters that have converged
   std::vector<std::string> weak;       // parameters the data have barely informed so far
-  std::map<std::string, long> counters;
+  CounterMap counters;
   size_t buffered_samples = 0;  // IMU + odometer samples held
   size_t pending_epochs = 0;    // rover epochs waiting
 };
