@@ -17,12 +17,10 @@ namespace {
 constexpr double kNees7Bound95 = 14.07;   // chi-square, 7 degrees of freedom, 95 %
 constexpr double kNees7Bound999 = 24.32;  // and 99.9 %: one run beyond it is a defect
 
-TEST(LooselyCoupled, BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm) {
-  sim::SimConfig cfg =
-      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
-  cfg.segments.resize(2 + 2 * 4);  // two laps, open sky and a few trees
-  test::TempDir dir;
-  sim::writeDataset(sim::simulate(cfg, 71), dir.file("data"));
+/// A simulated drive in `dir` with giocal rtk's solution of it as its position solutions.
+CalibrationInputs withRtkPositions(const sim::SimConfig& cfg, std::uint64_t seed,
+                                   const test::TempDir& dir) {
+  sim::writeDataset(sim::simulate(cfg, seed), dir.file("data"));
   CalibrationInputs in = loadCalibrationInputs(dir.file("data"));
   RtkJob rtk;
   rtk.rover = dir.file("data/rover.obs");
@@ -31,6 +29,15 @@ TEST(LooselyCoupled, BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm) 
   rtk.out = dir.file("rtk.pos");
   runRtk(rtk);
   in.positions = readPosFile(rtk.out);
+  return in;
+}
+
+TEST(LooselyCoupled, BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm) {
+  sim::SimConfig cfg =
+      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/field.yaml");
+  cfg.segments.resize(2 + 2 * 4);  // two laps, open sky and a few trees
+  test::TempDir dir;
+  CalibrationInputs in = withRtkPositions(cfg, 71, dir);
   ASSERT_GT(in.positions.size(), 200u);
   CalibrationOptions lc;
   lc.loosely_coupled = true;
@@ -89,15 +96,7 @@ TEST(LooselyCoupled, BothEstimatorsAreConsistentOverTenSeeds) {
   std::map<std::string, std::pair<int, std::string>> under;  // estimator -> (count, NEES list)
   for (std::uint64_t seed = 3601; seed <= 3610; ++seed) {
     test::TempDir dir;
-    sim::writeDataset(sim::simulate(cfg, seed), dir.file("data"));
-    CalibrationInputs in = loadCalibrationInputs(dir.file("data"));
-    RtkJob rtk;
-    rtk.rover = dir.file("data/rover.obs");
-    rtk.base = dir.file("data/base.obs");
-    rtk.nav = {dir.file("data/nav.rnx")};
-    rtk.out = dir.file("rtk.pos");
-    runRtk(rtk);
-    in.positions = readPosFile(rtk.out);
+    const CalibrationInputs in = withRtkPositions(cfg, seed, dir);
     for (const char* estimator : {"ekf", "fgo"}) {
       const CalibrationRun run = replayInputs(in, {estimator, lc, {}}, nullptr);
       const double n = calibrationError(run.final(), in.truth->calib).nees7;
