@@ -4,7 +4,8 @@
 # runs `giocal rtk` and RTKLIB's rnx2rtkp (continuous AR, ratio 3, L1+L2, 15 deg mask, GPS; Debian
 # package rtklib) on the same files, and prints per scene and seed the fix rate and the fixes more
 # than 5 cm (horizontally) from the true antenna, then the totals over the seeds.
-# Usage: bench/rtk_under_trees.sh [first seed, default 501] [seeds, default 4] [giocal config]
+# Usage: [GIOCAL=<another giocal binary>] bench/rtk_under_trees.sh [first seed, default 501]
+#        [seeds, default 4] [giocal config]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-501}"
