@@ -20,7 +20,7 @@ void Topocentric::elevationAzimuth(const Eigen::Vector3d& sat_e, double& el, dou
 }
 
 double tropoSaastamoinen(const Geodetic& rx, double el) {
-  if (rx.h < -100.0 || rx.h > 1e4 || el <= 0.0) return 0.0;
+  if (!tropoModelled(rx) || el <= 0.0) return 0.0;
   const double h = std::max(rx.h, 0.0);
   // Standard atmosphere at height h.
   const double p = 1013.25 * std::pow(1.0 - 2.2557e-5 * h, 5.2568);

@@ -21,6 +21,9 @@ class Topocentric {
   Eigen::Matrix3d R_enu_e_;
 };
 
+/// Whether tropoSaastamoinen models a receiver at this height (-100 m to 10 km; else it gives 0).
+inline bool tropoModelled(const Geodetic& rx) { return rx.h >= -100.0 && rx.h <= 1e4; }
+
 /// Saastamoinen zenith delay with a standard atmosphere (1013.25 hPa, 15 C, 70 % humidity at sea
 /// level) mapped by 1/cos(zenith) [m].
 double tropoSaastamoinen(const Geodetic& rx, double el);

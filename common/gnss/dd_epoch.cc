@@ -43,8 +43,9 @@ DdEpoch DdEpochBuilder::build(const ObsEpoch& rover, const ObsEpoch& base,
   const double mask = options_.elevation_mask_deg * M_PI / 180.0;
   const Topocentric sky(rover_e), base_sky(base_e_);
   const Geodetic rover_geo = geodeticFromEcef(rover_e), base_geo = geodeticFromEcef(base_e_);
-  // No troposphere difference for a rover position not yet known (the model's height range).
-  const bool tropo = std::abs(rover_geo.h) < 1e4 && std::abs(base_geo.h) < 1e4;
+  // Both receivers' troposphere or neither: one modelled against one not (a rover position not
+  // yet known, or below the model's -100 m) would put metres into every row.
+  const bool tropo = tropoModelled(rover_geo) && tropoModelled(base_geo);
   std::vector<std::pair<const SatObs*, const SatObs*>> pairs;
   for (const SatObs& ro : rover.sats) {
     if (std::find(options_.systems.begin(), options_.systems.end(), ro.sat.sys) ==
