@@ -74,6 +74,8 @@ EpochOutcome EkfCore::gnss(const ObsEpoch& rover, const ObsEpoch& base, Calibrat
   run.count(Counter::kGnssRowsRejected, rep.rejected_rows);
   run.count(Counter::kCodeOutliers, rep.code_outliers);
   run.count(Counter::kAmbiguityResets, rep.ambiguity_resets);
+  run.count(Counter::kFixesRejected, rep.fixes_rejected);
+  run.count(Counter::kFixExclusions, rep.fix_exclusions);
   EpochOutcome out;
   out.diverged = rep.diverged || !finiteState(filter_.state());
   if (out.diverged) return out;

@@ -188,7 +188,7 @@ GnssEpochReport GnssUpdate::process(CalibrationFilter& f, const ObsEpoch& rover,
 
 void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
                                     const std::vector<DdObservation>& phase_rows,
-                                    GnssEpochReport& rep) {
+                                    GnssEpochReport& rep, const std::vector<SatId>& excluded) {
   StateRegistry& s = f.state();
   const long na = static_cast<long>(phase_rows.size());
   if (na < options_.lambda.min_fixed) return;
@@ -300,10 +300,19 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
   const DdGnssModel model(f.frame(), ep.geometry, phase_rows, ep.undiff_variance);
   const MeasurementRows lin =
       linearize(model, s.bind(modelKeys(model, {state::kP, state::kQ, state::kPbg})), s.dim());
-  const Eigen::VectorXd sd = lin.R.diagonal().cwiseSqrt();
-  if ((lin.residual.cwiseAbs().array() / sd.array()).maxCoeff() > options_.max_fix_residual) {
+  // A failed fix is tried once more without the satellite of its worst row (fix_validation.h).
+  const Eigen::VectorXd z = lin.residual.cwiseAbs().cwiseQuotient(lin.R.diagonal().cwiseSqrt());
+  const FixCheck check = checkFixResiduals(phase_rows, z, options_.max_fix_residual, excluded);
+  if (!check.ok) {
     s = saved;
-    ++rep.rejected_rows;
+    ++rep.fixes_rejected;
+    if (!check.exclude) return;
+    ++rep.fix_exclusions;
+    std::vector<DdObservation> rest;
+    for (const DdObservation& o : phase_rows) {
+      if (o.sat != *check.exclude) rest.push_back(o);
+    }
+    resolveAmbiguities(f, ep, rest, rep, {*check.exclude});
     return;
   }
   s.condition(held);

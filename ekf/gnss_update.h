@@ -9,6 +9,7 @@
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
+#include "common/gnss/fix_validation.h"
 #include "ekf/calibration_filter.h"
 
 namespace giocal {
@@ -19,6 +20,7 @@ struct GnssEpochReport {
   bool diverged = false;  // DD code innovations far outside their covariance
   int dd_rows = 0, rejected_rows = 0, code_outliers = 0, ambiguity_resets = 0;
   int fixed_ambiguities = 0;
+  int fixes_rejected = 0, fix_exclusions = 0;  // fixes that failed validation; of those, retried
   int tdcp_rows = 0, tdcp_slips = 0, tdcp_screened = 0;  // the single-receiver scheme
   int doppler_rows = 0;
   double ratio = 0.0;
@@ -34,7 +36,8 @@ class GnssUpdate {
  private:
   void resetAmbiguity(StateRegistry& s, const StateKey& key, double value, double lambda);
   void resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
-                          const std::vector<DdObservation>& phase_rows, GnssEpochReport& rep);
+                          const std::vector<DdObservation>& phase_rows, GnssEpochReport& rep,
+                          const std::vector<SatId>& excluded = {});
 
   const BroadcastOrbits& orbits_;
   CalibrationOptions options_;

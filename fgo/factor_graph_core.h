@@ -115,7 +115,7 @@ class FactorGraphCore : public EstimatorCore {
   /// Solves the window; a solve that fails numerically is counted (numerical_failures), once
   /// named in the warnings.
   void solveWindow();
-  bool resolve(FgoEpoch& e);
+  bool resolve(FgoEpoch& e, const std::vector<SatId>& excluded = {});
 
   const CalibrationInputs& in_;
   CalibrationOptions o_;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/calibration/code_divergence.h"
+#include "common/gnss/fix_validation.h"
 #include "common/gnss/lambda.h"
 #include "common/imu/gyro_mean.h"
 #include "common/math/median.h"
@@ -201,8 +202,12 @@ bool FactorGraphCore::rejectWorstRow(FgoEpoch& e) {
   return true;
 }
 
-bool FactorGraphCore::resolve(FgoEpoch& e) {
-  const long na = static_cast<long>(e.phase_rows.size());
+bool FactorGraphCore::resolve(FgoEpoch& e, const std::vector<SatId>& excluded) {
+  std::vector<const DdObservation*> rows;  // the phase rows this fix is tried on
+  for (const DdObservation& o : e.phase_rows) {
+    if (!rowExcluded(o, excluded)) rows.push_back(&o);
+  }
+  const long na = static_cast<long>(rows.size());
   if (na < o_.lambda.min_fixed) return false;
   std::vector<StateKey> amb;
   auto index = [&](const StateKey& n) {
@@ -213,10 +218,10 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
   };
   std::vector<std::pair<int, int>> pairs;
   std::vector<double> el;
-  for (const DdObservation& o : e.phase_rows) {
-    pairs.push_back({static_cast<int>(index(ambiguityVar(o.sat, o.band).value())),
-                     static_cast<int>(index(ambiguityVar(o.ref, o.band).value()))});
-    el.push_back(e.dd.geometry[static_cast<size_t>(o.sat_index)].el);
+  for (const DdObservation* o : rows) {
+    pairs.push_back({static_cast<int>(index(ambiguityVar(o->sat, o->band).value())),
+                     static_cast<int>(index(ambiguityVar(o->ref, o->band).value()))});
+    el.push_back(e.dd.geometry[static_cast<size_t>(o->sat_index)].el);
   }
   // Float DD ambiguities and their covariance from the window.
   Eigen::VectorXd a(na);
@@ -255,12 +260,24 @@ bool FactorGraphCore::resolve(FgoEpoch& e) {
   }
   solveWindow();
   // Validate by the fixed solution's DD phase residuals, not by the cost (the IMU and odometer
-  // factors make any fix raise it).
-  if (normalizedRowResiduals(e, true).maxCoeff() > o_.max_fix_residual) {
+  // factors make any fix raise it); a failed fix is tried once more without the satellite of its
+  // worst row (fix_validation.h).
+  const Eigen::VectorXd z_all = normalizedRowResiduals(e, true);
+  std::vector<DdObservation> checked;
+  Eigen::VectorXd z(na);
+  for (size_t k = 0; k < e.phase_rows.size(); ++k) {
+    if (rowExcluded(e.phase_rows[k], excluded)) continue;
+    z[static_cast<long>(checked.size())] = z_all[static_cast<long>(k)];
+    checked.push_back(e.phase_rows[k]);
+  }
+  const FixCheck check = checkFixResiduals(checked, z, o_.max_fix_residual, excluded);
+  if (!check.ok) {
     w_.removeFactors(tag);
     solveWindow();
     run_->count(Counter::kFixesRejected);
-    return false;
+    if (!check.exclude) return false;
+    run_->count(Counter::kFixExclusions);
+    return resolve(e, {*check.exclude});
   }
   for (const DdAmbiguityFix& f : fresh) held_fixes_.insert({f.sat_block, f.ref_block});
   return true;

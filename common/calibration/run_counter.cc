@@ -30,6 +30,8 @@ const char* counterName(Counter c) {
       return "ambiguity_resets";
     case Counter::kFixesRejected:
       return "fixes_rejected";
+    case Counter::kFixExclusions:
+      return "fix_exclusions";
     case Counter::kGnssWithoutBase:
       return "gnss_without_base";
     case Counter::kReinitializations:

@@ -21,6 +21,7 @@ enum class Counter {
   kTdcpScreened,         // single receiver: phases off the predicted displacement, left out
   kAmbiguityResets,      // ambiguities restarted (slip or rejected phase row)
   kFixesRejected,        // LAMBDA fixes that failed validation
+  kFixExclusions,        // of those, tried again without the satellite of the worst row
   kGnssWithoutBase,      // rover epochs with no base epoch near enough
   kReinitializations,    // restarts after divergence
   kImuGaps,              // IMU intervals longer than max_imu_gap_s

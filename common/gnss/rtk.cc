@@ -66,24 +66,25 @@ bool RtkFilter::diverged(const std::vector<DdObservation>& rows,
   return z[0].size() >= 4 && median(z[0]) > limit && (z[1].empty() || median(z[1]) > limit);
 }
 
-bool RtkFilter::fixIsConsistent(const DdEpoch& ep, const std::vector<DdObservation>& obs,
-                                const std::vector<bool>& active,
-                                const Eigen::VectorXd& x_fix) const {
-  // A fix is kept only if the fixed solution fits every phase row of the epoch.
+FixCheck RtkFilter::checkFix(const DdEpoch& ep, const std::vector<bool>& active,
+                             const std::vector<SatId>& excluded,
+                             const Eigen::VectorXd& x_fix) const {
   std::vector<DdObservation> phase;
-  for (size_t k = 0; k < obs.size(); ++k) {
-    if (active[k] && obs[k].phase) phase.push_back(obs[k]);
+  for (size_t k = 0; k < ep.obs.size(); ++k) {
+    if (active[k] && ep.obs[k].phase && !rowExcluded(ep.obs[k], excluded))
+      phase.push_back(ep.obs[k]);
   }
   const Eigen::MatrixXd R = ddCovariance(phase, ep.undiff_variance);
+  Eigen::VectorXd z(static_cast<long>(phase.size()));
   for (size_t k = 0; k < phase.size(); ++k) {
     const DdObservation& o = phase[k];
     const double pred =
         ddPredict(o, ep.geometry, x_fix.head<3>(), x_fix[ambiguityIndex({o.sat, o.band})],
                   x_fix[ambiguityIndex({o.ref, o.band})], nullptr);
     const long i = static_cast<long>(k);
-    if (std::abs(o.value - pred) > options_.max_fix_residual * std::sqrt(R(i, i))) return false;
+    z[i] = std::abs(o.value - pred) / std::sqrt(R(i, i));
   }
-  return true;
+  return checkFixResiduals(phase, z, options_.max_fix_residual, excluded);
 }
 
 RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
@@ -229,15 +230,6 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
   sol.cov_e = P_.topLeftCorner<3, 3>();
   sol.v_e = x_.segment<3>(3);
 
-  // Ambiguity resolution on the DD ambiguities of this epoch's phase rows.
-  std::vector<std::pair<int, int>> dd;  // (sat state index, ref state index)
-  std::vector<double> dd_el;
-  for (size_t k = 0; k < obs.size(); ++k) {
-    if (!active[k] || !obs[k].phase) continue;
-    dd.push_back(
-        {ambiguityIndex({obs[k].sat, obs[k].band}), ambiguityIndex({obs[k].ref, obs[k].band})});
-    dd_el.push_back(geometry[static_cast<size_t>(obs[k].sat_index)].el);
-  }
   std::set<SatId> used;
   for (size_t k = 0; k < obs.size(); ++k) {
     if (active[k]) {
@@ -246,39 +238,59 @@ RtkSolution RtkFilter::process(const ObsEpoch& rover, const ObsEpoch* base) {
     }
   }
   sol.satellites = static_cast<int>(used.size());
-  const long na = static_cast<long>(dd.size());
-  if (na < options_.lambda.min_fixed) return sol;
-  Eigen::VectorXd a(na);
-  for (long k = 0; k < na; ++k) {
-    a[k] = x_[dd[static_cast<size_t>(k)].first] - x_[dd[static_cast<size_t>(k)].second];
+
+  // Ambiguity resolution on the DD ambiguities of this epoch's phase rows. A fix that fails its
+  // residual check is tried once more without the satellite of its worst row (fix_validation.h).
+  std::vector<SatId> excluded;
+  Eigen::VectorXd x_fix, d;
+  Eigen::MatrixXd PAt, Qf;
+  Eigen::LDLT<Eigen::MatrixXd> qf;
+  for (;;) {
+    std::vector<std::pair<int, int>> dd;  // (sat state index, ref state index)
+    std::vector<double> dd_el;
+    for (size_t k = 0; k < obs.size(); ++k) {
+      if (!active[k] || !obs[k].phase || rowExcluded(obs[k], excluded)) continue;
+      dd.push_back(
+          {ambiguityIndex({obs[k].sat, obs[k].band}), ambiguityIndex({obs[k].ref, obs[k].band})});
+      dd_el.push_back(geometry[static_cast<size_t>(obs[k].sat_index)].el);
+    }
+    const long na = static_cast<long>(dd.size());
+    if (na < options_.lambda.min_fixed) return sol;
+    Eigen::VectorXd a(na);
+    for (long k = 0; k < na; ++k) {
+      a[k] = x_[dd[static_cast<size_t>(k)].first] - x_[dd[static_cast<size_t>(k)].second];
+    }
+    const Eigen::MatrixXd Qa = ddAmbiguityCovariance(P_, dd);
+    const std::vector<int> drop = lowestElevationFirst(dd_el);
+    AmbiguityFix fix;
+    try {
+      fix = resolveAmbiguities(a, Qa, drop, options_.lambda);
+    } catch (const std::invalid_argument&) {
+      return sol;
+    }
+    sol.ratio = fix.ratio;
+    if (!fix.fixed) return sol;
+    // The fixed solution conditioned on the fixed DD ambiguities. Their rows of A are e_s - e_r:
+    // A P A^T and P A^T are read off P, and of the fixed covariance only the position's block is
+    // needed (dense products with A were most of the filter's time when it fixes every epoch).
+    const long nf = static_cast<long>(fix.indices.size()), n = x_.size();
+    std::vector<std::pair<int, int>> fixed_dd;
+    for (int i : fix.indices) fixed_dd.push_back(dd[static_cast<size_t>(i)]);
+    Qf = ddAmbiguityCovariance(P_, fixed_dd);
+    PAt.resize(n, nf);
+    d.resize(nf);
+    for (long k = 0; k < nf; ++k) {
+      const auto [i, j] = fixed_dd[static_cast<size_t>(k)];
+      PAt.col(k) = P_.col(i) - P_.col(j);
+      d[k] = x_[i] - x_[j] - fix.values[k];
+    }
+    qf.compute(Qf);
+    x_fix = x_ - PAt * qf.solve(d);
+    const FixCheck check = checkFix(ep, active, excluded, x_fix);
+    if (check.ok) break;
+    if (!check.exclude) return sol;
+    excluded.push_back(*check.exclude);
   }
-  const Eigen::MatrixXd Qa = ddAmbiguityCovariance(P_, dd);
-  const std::vector<int> drop = lowestElevationFirst(dd_el);
-  AmbiguityFix fix;
-  try {
-    fix = resolveAmbiguities(a, Qa, drop, options_.lambda);
-  } catch (const std::invalid_argument&) {
-    return sol;
-  }
-  sol.ratio = fix.ratio;
-  if (!fix.fixed) return sol;
-  // The fixed solution conditioned on the fixed DD ambiguities. Their rows of A are e_s - e_r:
-  // A P A^T and P A^T are read off P, and of the fixed covariance only the position's block is
-  // needed (dense products with A were most of the filter's time when it fixes every epoch).
-  const long nf = static_cast<long>(fix.indices.size()), n = x_.size();
-  std::vector<std::pair<int, int>> fixed_dd;
-  for (int i : fix.indices) fixed_dd.push_back(dd[static_cast<size_t>(i)]);
-  const Eigen::MatrixXd Qf = ddAmbiguityCovariance(P_, fixed_dd);
-  Eigen::MatrixXd PAt(n, nf);
-  Eigen::VectorXd d(nf);
-  for (long k = 0; k < nf; ++k) {
-    const auto [i, j] = fixed_dd[static_cast<size_t>(k)];
-    PAt.col(k) = P_.col(i) - P_.col(j);
-    d[k] = x_[i] - x_[j] - fix.values[k];
-  }
-  const Eigen::LDLT<Eigen::MatrixXd> qf(Qf);
-  const Eigen::VectorXd x_fix = x_ - PAt * qf.solve(d);
-  if (!fixIsConsistent(ep, obs, active, x_fix)) return sol;
   sol.p_e = x_fix.head<3>();
   sol.cov_e = P_.topLeftCorner<3, 3>() -
               PAt.topRows<3>() * qf.solve(Eigen::MatrixXd(PAt.topRows<3>().transpose()));

@@ -11,6 +11,7 @@
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/cycle_slip.h"
 #include "common/gnss/dd_epoch.h"
+#include "common/gnss/fix_validation.h"
 #include "common/gnss/lambda.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/spp.h"
@@ -59,8 +60,9 @@ class RtkFilter {
   void removeAmbiguity(const AmbKey& key);
   /// `normalized`: each row's |innovation| / its predicted sigma.
   bool diverged(const std::vector<DdObservation>& rows, const Eigen::VectorXd& normalized) const;
-  bool fixIsConsistent(const DdEpoch& ep, const std::vector<DdObservation>& obs,
-                       const std::vector<bool>& active, const Eigen::VectorXd& x_fix) const;
+  /// The fixed solution's DD phase residuals over the active rows not left out (fix_validation.h).
+  FixCheck checkFix(const DdEpoch& ep, const std::vector<bool>& active,
+                    const std::vector<SatId>& excluded, const Eigen::VectorXd& x_fix) const;
 
   const BroadcastOrbits& orbits_;
   Eigen::Vector3d base_e_;

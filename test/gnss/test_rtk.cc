@@ -12,6 +12,7 @@
 #include "common/gnss/pos_reader.h"
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
+#include "common/gnss/rinex_obs_writer.h"
 #include "common/gnss/rtk_job.h"
 #include "common/io/data_error.h"
 #include "common/math/rotation.h"
@@ -129,6 +130,48 @@ TEST(Rtk, MosaicThreeFrequencies) {
   EXPECT_GE(r.summary.fixed, 298);
   EXPECT_LT(r.mean_enu.head<2>().norm(), 0.01);
   EXPECT_LT(std::abs(r.mean_enu.z()), 0.02);
+}
+
+// One satellite's L1 phase a quarter cycle off (a signal tracked with another code, not aligned):
+// the fix of the others must not be withheld.
+TEST(Rtk, OneSatelliteQuarterCycleOffKeepsTheFix) {
+  RtkJob job = mosaicJob();
+  const BroadcastOrbits orbits(readRinexNav(job.nav.front()));
+  ObsData rover = readRinexObs(job.rover);
+  const ObsData base = readRinexObs(job.base);
+  DdEpochBuilder builder(orbits, *job.base_pos, DdOptions{});
+  const DdEpoch ep =
+      builder.build(rover.epochs.front(), base.epochs.front(), ecefFromGeodetic(kMosaicRover));
+  SatId victim;
+  double best = 10.0;
+  for (const DdObservation& o : ep.obs) {
+    const double el = ep.geometry[static_cast<size_t>(o.sat_index)].el;
+    if (o.sat.sys == GnssSystem::kGps && o.phase && el > 30.0 * kDegToRad && el < best) {
+      best = el;
+      victim = o.sat;
+    }
+  }
+  ASSERT_LT(best, 10.0);
+  for (ObsEpoch& e : rover.epochs) {
+    for (SatObs& s : e.sats) {
+      if (!(s.sat == victim)) continue;
+      for (SignalObs& g : s.signals) {
+        if (g.band == '1') g.L += 0.25;
+      }
+    }
+  }
+  test::TempDir dir;
+  RinexObsHeader h;
+  h.obs_types = rover.header.obs_types;
+  h.approx_position = rover.header.approx_position;
+  job.rover = dir.file("rover.obs");
+  writeRinexObs(job.rover, h, rover.epochs);
+  const Result r = run(job, kMosaicRover);
+  std::cout << "mosaic RTK, " << victim.str() << " L1 +0.25 cycle: " << r.summary.fixed << "/"
+            << r.summary.epochs << " fixed, mean fixed ENU error " << r.mean_enu.transpose() * 1000
+            << " mm\n";
+  EXPECT_GE(r.summary.fixed, 298);
+  EXPECT_LT(r.mean_enu.head<2>().norm(), 0.01);
 }
 
 TEST(Rtk, GsiRinex2MatchesRtklib) {
