@@ -126,7 +126,7 @@ void printStacks(const std::map<std::vector<void*>, long long>& stacks) {
   for (const auto& [stack, n] : stacks) order.push_back({n, &stack});
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (size_t k = 0; k < std::min<size_t>(order.size(), 8); ++k) {
+  for (size_t k = 0; k < std::min<size_t>(order.size(), 200); ++k) {
     std::printf("  %lld allocations from:\n", order[k].first);
     const std::vector<void*>& frames = *order[k].second;
     char** names = backtrace_symbols(frames.data(), static_cast<int>(frames.size()));
