@@ -174,7 +174,7 @@ int runCalibrateCommand(int argc, char** argv) {
   job.state_every_s = vm["state-every"].as<double>();
   job.validate = !vm["no-validate"].as<bool>();
   if (!(job.state_every_s > 0.0)) throw po::error("--state-every must be positive");
-  job.positions = lcPositions(vm, true);
+  job.positions = lcPositions(vm);
   job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
@@ -196,7 +196,7 @@ int runCompareCommand(int argc, char** argv) {
                            "giocal compare --data /tmp/paper --out /tmp/paper-compare");
   giocal::CompareJob job;
   job.data = vm["data"].as<std::string>();
-  job.positions = lcPositions(vm, true);
+  job.positions = lcPositions(vm);
   job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
@@ -223,6 +223,7 @@ int runValidateCommand(int argc, char** argv) {
   job.outage_s = vm["outage"].as<double>();
   job.windows = vm["windows"].as<int>();
   job.positions = lcPositions(vm);
+  job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
@@ -303,7 +304,7 @@ int runDeadReckonCommand(int argc, char** argv) {
   job.start_s = vm["start"].as<double>();
   job.duration_s = vm["duration"].as<double>();
   job.reference = vm["reference"].as<std::string>();
-  job.positions = lcPositions(vm, true);
+  job.positions = lcPositions(vm);
   job.single = singleReceiver(vm);
   readRunOutputOptions(vm, job);
   const giocal::InterruptWatch interrupts;

@@ -12,12 +12,8 @@ void addGnssOptions(po::options_description& opts) {
       "pos", po::value<std::string>()->default_value(""), "the LC scheme's .pos file");
 }
 
-std::string lcPositions(const po::variables_map& vm, bool single_allowed) {
+std::string lcPositions(const po::variables_map& vm) {
   const std::string gnss = vm["gnss"].as<std::string>();
-  if (gnss == "single" && !single_allowed)
-    throw po::error(
-        "--gnss single: only calibrate, compare and deadreckon have the "
-        "single-receiver scheme so far");
   if (gnss != "tc" && gnss != "lc" && gnss != "single")
     throw po::error("--gnss must be tc, lc or single, not '" + gnss + "'");
   if ((gnss == "lc") != !vm["pos"].as<std::string>().empty()) {

@@ -9,10 +9,9 @@ namespace giocal {
 void addGnssOptions(boost::program_options::options_description& opts);
 
 /// The LC scheme's .pos file, empty for the TC (and single-receiver) scheme. Throws a
-/// program_options error for an unknown scheme, --gnss lc without --pos (or --pos without it),
-/// and --gnss single where the command has no such scheme (single_allowed false).
-std::string lcPositions(const boost::program_options::variables_map& vm,
-                        bool single_allowed = false);
+/// program_options error for an unknown scheme, and --gnss lc without --pos (or --pos without
+/// it).
+std::string lcPositions(const boost::program_options::variables_map& vm);
 
 /// --gnss single: one receiver, no base.
 bool singleReceiver(const boost::program_options::variables_map& vm);

@@ -3,11 +3,16 @@
 #include <stdexcept>
 
 #include "apps/dataset_rtk.h"
+#include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/tdcp_track.h"
 #include "evaluation/validation.h"
 
 namespace giocal {
 
 namespace {
+
+// More than ReferenceTrajectory::at's largest step between samples (1 s): a gap.
+constexpr double kStretchGapS = 1.001;
 
 /// The fixed RTK solutions of the dataset's rover and base, written to `pos`.
 std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfig& config,
@@ -15,8 +20,8 @@ std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfi
   const DatasetDescription& d = in.description;
   if (d.base_obs.empty())
     throw std::runtime_error(d.pathOf("dataset.yaml") +
-                             ": no base observations; validate a rover-only dataset with --gnss lc "
-                             "--pos <file.pos>");
+                             ": no base observations; validate a rover-only dataset with --gnss "
+                             "single, or --gnss lc --pos <file.pos>");
   std::vector<RtkSolution> solutions;
   runRtk(datasetRtkJob(d, config, pos, stop), &solutions);
   std::vector<PositionFix> fixes;
@@ -31,13 +36,35 @@ std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfi
   return fixes;
 }
 
+/// One receiver's own track (single point positions joined by time-differenced phase), a new
+/// stretch (another single point position's offset) kept only from more than a second after the
+/// last point of the one before: a gap, so that no window's comparison crosses the jump.
+std::vector<PositionFix> ownTrack(const CalibrationInputs& in, const SingleReceiverOptions& o) {
+  const BroadcastOrbits orbits(in.nav);
+  TdcpTrack track(orbits, o.tdcp, o.position_sigma_min_m);
+  std::vector<PositionFix> fixes;
+  double skip_until = -INFINITY;
+  for (const ObsEpoch& e : in.rover.epochs) {
+    const std::optional<PositionFix> fix = track.add(e);
+    if (!fix) continue;
+    if (track.startedStretch() && !fixes.empty()) skip_until = fixes.back().t + kStretchGapS;
+    if (fix->t > skip_until) fixes.push_back(*fix);
+  }
+  return fixes;
+}
+
 }  // namespace
 
 ValidationReference validationReference(const CalibrationInputs& in, const GiocalConfig& config,
                                         const std::string& positions, const std::string& pos,
-                                        const StopRequest* stop) {
+                                        const StopRequest* stop, bool single) {
   ValidationReference r;
-  if (positions.empty()) {
+  if (single) {
+    r.fixes = ownTrack(in, config.calibration.single);
+    r.name =
+        "the rover's own track (single point positions joined by time-differenced phase; "
+        "errors taken from each window's start)";
+  } else if (positions.empty()) {
     r.fixes = rtkFixes(in, config, pos, stop);
     r.name = "RTK fixes of the dataset";
   } else {
@@ -54,17 +81,16 @@ RunValidation validateAtEnd(const DatasetFolder& data, const GiocalConfig& confi
                             const CalibrationOptions& options, const std::string& positions,
                             const std::string& run_dir, const StopRequest* stop) {
   RunValidation out;
-  if (options.single_receiver) {
-    out.why_not = "no validation for one receiver yet (its reference would be its own track)";
-    return out;
-  }
   const TempPosFile pos("validation");
   try {
-    const CalibrationInputs in = loadCalibrationInputs(data, positions);
-    const ValidationReference ref = validationReference(in, config, positions, pos.path, stop);
+    CalibrationInputs in = loadCalibrationInputs(data, positions);
+    if (options.single_receiver) addSingleReceiverTrack(in, options.single);
+    const ValidationReference ref =
+        validationReference(in, config, positions, pos.path, stop, options.single_receiver);
     ValidationJob v;
     v.run = run_dir;
     v.options = options;
+    v.relative_to_start = options.single_receiver;
     v.progress = [stop](double) { checkStop(stop); };
     const Validation r = validateCalibration(in, ReferenceTrajectory(positionRows(ref.fixes)), v);
     out.verdict = r.verdict;

@@ -20,16 +20,17 @@ struct ValidationReference {
   std::string name;  // for messages and summary.json
 };
 
-/// The dataset's fixed RTK solutions (written to `pos`), or with `positions` the LC solutions
-/// already in `in`. Throws std::runtime_error when it has fewer than two rows, or when the
-/// dataset has no base and no solutions are given.
+/// The dataset's fixed RTK solutions (written to `pos`), with `positions` the LC solutions
+/// already in `in`, or with `single` the rover's own track (whose offset is metres: the windows
+/// compare displacements from their start). Throws std::runtime_error when it has fewer than two
+/// rows, or when the dataset has no base and neither is asked for.
 ValidationReference validationReference(const CalibrationInputs& in, const GiocalConfig& config,
                                         const std::string& positions, const std::string& pos,
-                                        const StopRequest* stop);
+                                        const StopRequest* stop, bool single = false);
 
 /// calibrate's check of its calibration at its end: `run_dir` holds the run's calibration.csv;
-/// `options` are those the run used. A drive too short, a single receiver (not yet) or no GNSS
-/// reference gives a result that says why not, not an error.
+/// `options` are those the run used. A drive too short or no GNSS reference gives a result that
+/// says why not, not an error.
 RunValidation validateAtEnd(const DatasetFolder& data, const GiocalConfig& config,
                             const CalibrationOptions& options, const std::string& positions,
                             const std::string& run_dir, const StopRequest* stop);

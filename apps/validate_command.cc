@@ -15,6 +15,7 @@
 #include "evaluation/validation.h"
 #include "options/giocal_config.h"
 #include "replay/measured_heights.h"
+#include "replay/run_preparation.h"
 
 namespace giocal {
 
@@ -35,13 +36,17 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
     throw std::runtime_error("--outage must be at least 5 s and --windows at least 1");
   const GiocalConfig config = readGiocalConfig(job.config);
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
-  const CalibrationInputs in = loadCalibrationInputs(data, job.positions);
+  CalibrationInputs in = loadCalibrationInputs(data, job.positions);
+  // One receiver (asked, or a dataset without a base): aided by it, against its own track.
+  const bool single = usesSingleReceiver(data.description, job.single, job.positions);
+  if (single) addSingleReceiverTrack(in, config.calibration.single);
+  const bool rtk = job.positions.empty() && !single;
   OutputSet outputs(job.out);
-  // The RTK solution is one of the outputs; with --pos none is written.
+  // The RTK solution is one of the outputs; with --pos or one receiver none is written.
   const ValidationReference ref = validationReference(
-      in, config, job.positions,
-      job.positions.empty() ? outputs.stagedPath("gnss_reference.pos") : std::string(), job.stop);
-  const std::string reference = ref.name + (job.positions.empty() ? " (gnss_reference.pos)" : "");
+      in, config, job.positions, rtk ? outputs.stagedPath("gnss_reference.pos") : std::string(),
+      job.stop, single);
+  const std::string reference = ref.name + (rtk ? " (gnss_reference.pos)" : "");
   const ReferenceTrajectory trajectory(positionRows(ref.fixes));
   ValidationJob v;
   v.run = job.run;
@@ -49,6 +54,8 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   v.windows = job.windows;
   v.options = config.calibration;
   v.options.loosely_coupled = !job.positions.empty();
+  v.options.single_receiver = single;
+  v.relative_to_start = single;
   // The GNSS-aided stretches weigh the solutions' heights as calibrate did.
   if (v.options.loosely_coupled) applyFixHeights(measureFixHeights(in), v.options);
   ProgressLine progress("validate", 0.0, 1.0, job.quiet, "of the windows");
@@ -60,8 +67,7 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
   progress.clear();
 
   nlohmann::ordered_json j;
-  if (job.positions.empty())
-    j["files"] = {{"gnss_reference.pos", outputs.close("gnss_reference.pos")}};
+  if (rtk) j["files"] = {{"gnss_reference.pos", outputs.close("gnss_reference.pos")}};
   j["run"] = job.run;
   j["reference"] = reference;
   j["outage_s"] = job.outage_s;
@@ -83,8 +89,8 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
         << " m driven: horizontal MAX " << std::setprecision(2) << w.calibrated_m
         << " m calibrated, " << w.guess_m << " m guess" << std::setprecision(1) << "\n";
   }
-  log << "  outputs: " << job.out << "/{summary.json"
-      << (job.positions.empty() ? ", gnss_reference.pos" : "") << "}\n";
+  log << "  outputs: " << job.out << "/{summary.json" << (rtk ? ", gnss_reference.pos" : "")
+      << "}\n";
   log << std::setprecision(2) << "  verdict: " << r.verdict << " (mean " << r.calibrated_m
       << " m calibrated against " << r.guess_m << " m guess, ratio " << r.ratio << "; better in "
       << r.better_windows << " of " << r.windows.size() << " windows";

@@ -13,6 +13,7 @@ namespace giocal {
 struct ValidateJob {
   std::string data, run, config, out;
   std::string positions;  // --gnss lc --pos: the GNSS solution and aiding; else RTK of the data
+  bool single = false;    // --gnss single: the rover alone (also without a base in the dataset)
   double outage_s = 60.0;
   int windows = 5;
   bool overwrite = false, quiet = false;

@@ -104,15 +104,23 @@ DeadReckoning deadReckon(const CalibrationInputs& in, const ReferenceTrajectory&
   const double step = 1.0 / options.output_rate_hz;
   double next = out.t_start, sum_sq = 0.0;
   std::optional<TruthSample> last_ref;
+  std::optional<Eigen::Vector3d> error_at_start;  // job.relative_to_start
+  bool past_gap = false;
   const auto emitUpTo = [&](double t) {
     for (; next <= t + 1e-9 && next <= out.t_end + 1e-9; next += step) {
       const TruthSample dr = filter.trajectorySample(std::max(next, filter.time()));
       const std::optional<TruthSample> ref = reference.at(next);
       out.trajectory.push_back(dr);
-      if (!ref) continue;
+      // A relative reference's next stretch has another offset: nothing after a gap compares.
+      past_gap = past_gap || (job.relative_to_start && !ref && !out.errors.empty());
+      if (!ref || past_gap) continue;
       if (last_ref) out.distance_m += errorAt(*ref, *last_ref).enu.head<2>().norm();
       last_ref = ref;
       DeadReckoningError e = errorAt(dr, *ref);
+      if (job.relative_to_start) {
+        if (!error_at_start) error_at_start = e.enu;
+        e.enu -= *error_at_start;
+      }
       e.elapsed = next - out.t_start;
       e.distance = out.distance_m;
       out.errors.push_back(e);

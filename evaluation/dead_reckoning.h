@@ -22,6 +22,10 @@ struct DeadReckoningJob {
   // false (a reference of GNSS positions): the GNSS-aided state at the start is kept, not moved
   // onto the reference.
   bool reference_has_attitude = true;
+  // true (one receiver's own track, whose offset is a single point position's metres): errors
+  // are displacement errors from the outage start (the start's error taken out of every later
+  // one), compared up to the reference's first gap.
+  bool relative_to_start = false;
   std::function<void(double)> progress;  // called with the data time reached (may throw to stop)
 };
 

@@ -77,6 +77,12 @@ std::vector<double> validationWindowStarts(const CalibrationInputs& in,
   for (int k = 0; k < n; ++k) {
     double t = std::max(earliest, n == 1 ? first : first + (last - first) * k / (n - 1));
     while (t <= last && !reference.at(t)) t += kGapStepS;
+    // A relative reference (one receiver's own track) compares only up to its next gap: the
+    // window starts after the last gap inside it, so that it compares its whole length.
+    for (double g = t; job.relative_to_start && t <= last && g <= t + job.outage_s;
+         g += kGapStepS) {
+      if (!reference.at(g)) t = g + kGapStepS;
+    }
     if (t > last) break;
     starts.push_back(t);
     earliest = t + job.outage_s;
@@ -115,10 +121,12 @@ Validation validateCalibration(const CalibrationInputs& in, const ReferenceTraje
       dr.start_s = w.start_s;
       dr.duration_s = job.outage_s;
       dr.reference_has_attitude = job.reference_has_attitude;
+      dr.relative_to_start = job.relative_to_start;
       applyCalibrationSource(source, dr, window_in.odom);
       const DeadReckoning r = deadReckon(window_in, reference, dr);
       (calibrated ? w.calibrated_m : w.guess_m) = r.horizontal_max_m;
-      w.duration_s = r.t_end - r.t_start;
+      // Compared up to the end, or (a relative reference) up to its first gap.
+      w.duration_s = (job.relative_to_start ? r.errors.back().t : r.t_end) - r.t_start;
       w.distance_m = r.distance_m;
     }
     v.better_windows += w.calibrated_m < w.guess_m;

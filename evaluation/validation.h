@@ -21,6 +21,7 @@ struct ValidationJob {
   int windows = 5;         // spread over the drive (fewer when the drive is short)
   CalibrationOptions options;
   bool reference_has_attitude = false;   // a GNSS solution has none
+  bool relative_to_start = false;        // one receiver's own track (DeadReckoningJob)
   std::function<void(double)> progress;  // the share of the windows done (may throw to stop)
 };
 

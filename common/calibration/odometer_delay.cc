@@ -87,18 +87,32 @@ bool OdometerDelayEstimator::anglesAt(const std::vector<Rate>& g, double t,
 void OdometerDelayEstimator::compare(const Block& b) {
   const double span = b.t1 - b.t0;
   const double w = b.angle / span;
-  // The samples the candidates read, copied once: indexing the deque for each of the ~1000
+  // The samples the candidates read, copied once: indexing the ring for each of the ~1000
   // look-ups cost more than the comparison itself (callgrind). From the last sample at or
   // before the earliest time asked to the one after the first at or after the latest, one more
   // each side for the rounding of the delay grid, so that every look-up finds the samples (and
-  // the gaps) it would find in the whole deque.
-  const auto later = [](double t, const Rate& r) { return t < r.t; };
-  auto first = std::upper_bound(gyro_.begin(), gyro_.end(), b.t0 - max_delay_s_, later);
-  for (int k = 0; k < 2 && first != gyro_.begin(); ++k) --first;
-  auto last = std::lower_bound(gyro_.begin(), gyro_.end(), b.t1 + max_delay_s_,
-                               [](const Rate& r, double t) { return r.t < t; });
-  for (int k = 0; k < 2 && last != gyro_.end(); ++k) ++last;
-  window_.assign(first, last);
+  // the gaps) it would find in the whole ring.
+  // Binary search by index (the ring has no iterators): the first sample later than t (or_at:
+  // not earlier than t).
+  const auto firstAfter = [&](double t, bool or_at) {
+    std::size_t lo = 0, hi = gyro_.size();
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      const bool before = or_at ? gyro_[mid].t < t : gyro_[mid].t <= t;
+      if (before) {
+        lo = mid + 1;
+      } else {
+        hi = mid;
+      }
+    }
+    return lo;
+  };
+  std::size_t first = firstAfter(b.t0 - max_delay_s_, false);
+  for (int k = 0; k < 2 && first > 0; ++k) --first;
+  std::size_t last = firstAfter(b.t1 + max_delay_s_, true);
+  for (int k = 0; k < 2 && last < gyro_.size(); ++k) ++last;
+  window_.clear();
+  for (std::size_t k = first; k < last; ++k) window_.push_back(gyro_[k]);
   // Every candidate sees the same blocks: one outside the data or across a gap skips the block.
   const bool start_known = b.t0 == end_t_;
   std::swap(start_, end_);

@@ -8,9 +8,9 @@
 
 #include <Eigen/Core>
 #include <cmath>
-#include <deque>
 #include <vector>
 
+#include "common/containers/ring_queue.h"
 namespace giocal {
 
 struct OdometerDelay {
@@ -56,13 +56,13 @@ class OdometerDelayEstimator {
 
   Eigen::Vector3d up_b_;
   double max_delay_s_, step_s_;
-  std::deque<Rate> gyro_;
+  RingQueue<Rate> gyro_;      // a ring: a deque allocated a block every few hundred samples
   std::vector<Rate> window_;  // the samples one comparison reads, contiguous
   // The angles at the end of the last compared block: blocks follow each other, so they are the
   // next block's start angles.
   std::vector<double> start_, end_;
   double end_t_ = NAN;
-  std::deque<Block> pending_;   // waiting for the IMU
+  RingQueue<Block> pending_;    // waiting for the IMU
   Block block_{NAN, NAN, 0.0};  // being summed
   double last_odometer_t_ = NAN, last_yaw_rate_ = 0.0;
   // Sums over compared blocks of the odometer's mean rate w: of w, w^2 and, per candidate delay,

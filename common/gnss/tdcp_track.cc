@@ -14,6 +14,7 @@ constexpr double kDopplerVelocitySigma = 0.1;
 
 std::optional<PositionFix> TdcpTrack::add(const ObsEpoch& epoch) {
   const SppSolution spp = solveSpp(epoch, orbits_, SppOptions{});
+  started_stretch_ = false;
   if (!spp.valid) {
     if (last_) builder_.add(epoch, last_->p_e);  // the slip tests see the epoch
     last_.reset();
@@ -42,6 +43,7 @@ std::optional<PositionFix> TdcpTrack::add(const ObsEpoch& epoch) {
   } else {
     fix = sppFix(spp, epoch.t, spp_sigma_min_);  // a new stretch
     cov_e_.setZero();
+    started_stretch_ = true;
   }
   last_ = fix;
   last_velocity_ = spp.velocity_valid ? std::optional<Eigen::Vector3d>(spp.v_e) : std::nullopt;

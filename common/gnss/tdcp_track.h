@@ -27,6 +27,8 @@ class TdcpTrack {
   /// (decimetres), and without those starts a new stretch at the single point position, whose
   /// sigma (at least spp_sigma_min) it then carries.
   std::optional<PositionFix> add(const ObsEpoch& epoch);
+  /// Whether the last add() started a new stretch (its offset is another single point position's).
+  bool startedStretch() const { return started_stretch_; }
 
  private:
   const BroadcastOrbits& orbits_;
@@ -36,6 +38,7 @@ class TdcpTrack {
   std::optional<PositionFix> last_;
   std::optional<Eigen::Vector3d> last_velocity_;     // the Doppler velocity at last_ (ECEF)
   Eigen::Matrix3d cov_e_ = Eigen::Matrix3d::Zero();  // summed step covariance, ECEF
+  bool started_stretch_ = false;
 };
 
 }  // namespace giocal

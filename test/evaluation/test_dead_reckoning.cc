@@ -68,6 +68,43 @@ TEST(DeadReckoning, StartsOnTheReferenceAndAScaleErrorShowsAsTheSameShareOfTheDi
   EXPECT_GT(drive.run(yawed).horizontal_max_m, 2.0 * exact.horizontal_max_m);
 }
 
+// One receiver's own track as the reference (validate --gnss single): its offset, metres, is
+// taken out at the window's start, and nothing after its first gap is compared (the track's next
+// stretch starts at another single point position).
+TEST(DeadReckoning, RelativeToItsStartAnOffsetReferenceGivesTheSameErrorsUpToItsFirstGap) {
+  const Drive drive(62);
+  const std::vector<TruthSample> rows = readTruthCsv(drive.dir.file("data/truth.csv"));
+  std::vector<TruthSample> moved = rows;
+  for (TruthSample& r : moved) {
+    r.lat_deg += 5.0 / 6378137.0 * kRadToDeg;  // 5 m north
+    r.h += 2.0;
+  }
+  DeadReckoningJob job;
+  job.start_s = 40.0;
+  job.duration_s = 120.0;
+  job.calibration.mean = drive.in.truth->calib;
+  job.calibration.covariance = Eigen::Matrix<double, 8, 8>::Identity() * 1e-14;
+  job.reference_has_attitude = false;  // a GNSS solution: the aided start state is kept
+  const DeadReckoning absolute = deadReckon(drive.in, ReferenceTrajectory(moved), job);
+  job.relative_to_start = true;
+  const DeadReckoning plain = deadReckon(drive.in, ReferenceTrajectory(rows), job);
+  const DeadReckoning relative = deadReckon(drive.in, ReferenceTrajectory(moved), job);
+  ASSERT_FALSE(relative.errors.empty());
+  EXPECT_GT(absolute.errors.front().horizontal(), 4.5);
+  EXPECT_LT(relative.errors.front().horizontal(), 1e-9);
+  EXPECT_NEAR(relative.horizontal_max_m, plain.horizontal_max_m, 1e-3);
+  EXPECT_LT(relative.horizontal_max_m, 1.0);
+  EXPECT_NEAR(relative.errors.back().elapsed, 120.0, 0.2);
+
+  // A 2 s gap in the reference 50 s in: compared up to it, not after.
+  std::vector<TruthSample> gapped;
+  for (const TruthSample& r : moved) {
+    if (r.t < relative.t_start + 50.0 || r.t > relative.t_start + 52.0) gapped.push_back(r);
+  }
+  const DeadReckoning cut = deadReckon(drive.in, ReferenceTrajectory(gapped), job);
+  EXPECT_NEAR(cut.errors.back().elapsed, 50.0, 0.2);
+}
+
 // A calibrate run's covariance correlates the extrinsic yaw with the lever arm and the scales.
 // The initial state's attitude is correlated with the extrinsic yaw, so it must be with everything
 // that is: with the theta block alone the joint covariance was indefinite, and the dead reckoning
