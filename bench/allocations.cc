@@ -1,9 +1,10 @@
 // Heap allocations of the Calibrator in the steady state, per IMU sample, per odometer sample
-// and per GNSS epoch: global operator new counted around each add*() call, fed in time order from
-// a simulated drive (without truth.csv: the live check against a truth is evaluation). A call
-// during which a rover epoch left the calibrator's queue did that epoch's work and counts for the
-// epoch; the others count for their sample. The first third of the drive (initialization, the
-// first windows) is left out. Prints the mean and the largest count per kind, per estimator.
+// and per GNSS epoch: malloc and its kin (operator new and Eigen both call them) counted around
+// each add*() call, fed in time order from a simulated drive (without truth.csv: the live check
+// against a truth is evaluation). A call during which a rover epoch left the calibrator's queue
+// did that epoch's work and counts for the epoch; the others count for their sample. The first
+// third of the drive (initialization, the first windows) is left out. Prints the mean and the
+// largest count per kind, per estimator.
 // With --where: also where the IMU and odometer samples' allocations come from (the EKF's), as
 // the most frequent call stacks (symbols need the -rdynamic this target is linked with).
 // Usage: giocal_allocations [--preset config/sim/paper.yaml] [--seed N] [--where]
@@ -42,24 +43,44 @@ __attribute__((noinline)) void record() {
 }
 }  // namespace
 
-// Every allocation of the process goes through these (the bench's own included, which is why
-// only the calls' differences are read).
-void* operator new(std::size_t n) {
+// Every heap allocation of the process goes through these (the bench's own included, which is
+// why only the calls' differences are read): malloc and its kin, which operator new and Eigen's
+// dynamic matrices both call, interposed over glibc's.
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void* __libc_memalign(std::size_t, std::size_t);
+void __libc_free(void*);
+
+void* malloc(std::size_t n) {
   ++g_allocations;
   record();
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
+  return __libc_malloc(n);
 }
-void* operator new[](std::size_t n) {
+void* calloc(std::size_t k, std::size_t n) {
   ++g_allocations;
   record();
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
+  return __libc_calloc(k, n);
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void* realloc(void* p, std::size_t n) {
+  ++g_allocations;
+  record();
+  return __libc_realloc(p, n);
+}
+int posix_memalign(void** out, std::size_t alignment, std::size_t n) {
+  ++g_allocations;
+  record();
+  *out = __libc_memalign(alignment, n);
+  return *out ? 0 : 12;  // ENOMEM
+}
+void* aligned_alloc(std::size_t alignment, std::size_t n) {
+  ++g_allocations;
+  record();
+  return __libc_memalign(alignment, n);
+}
+void free(void* p) { __libc_free(p); }
+}
 
 using namespace giocal;
 
@@ -126,7 +147,7 @@ void printStacks(const std::map<std::vector<void*>, long long>& stacks) {
   for (const auto& [stack, n] : stacks) order.push_back({n, &stack});
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (size_t k = 0; k < std::min<size_t>(order.size(), 200); ++k) {
+  for (size_t k = 0; k < std::min<size_t>(order.size(), 8); ++k) {
     std::printf("  %lld allocations from:\n", order[k].first);
     const std::vector<void*>& frames = *order[k].second;
     char** names = backtrace_symbols(frames.data(), static_cast<int>(frames.size()));

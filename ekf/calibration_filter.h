@@ -145,6 +145,7 @@ class CalibrationFilter {
   int odometer_rejected_in_row_ = 0;
   long numerical_failures_ = 0;
   KalmanWorkspace workspace_;
+  StateRegistry iterate_prior_;  // the iterated update's prior, kept for its storage
 };
 
 }  // namespace giocal
