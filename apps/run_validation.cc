@@ -1,6 +1,7 @@
 #include "apps/run_validation.h"
 
 #include <stdexcept>
+#include <utility>
 
 #include "apps/dataset_rtk.h"
 #include "common/gnss/broadcast_orbits.h"
@@ -92,7 +93,8 @@ RunValidation validateAtEnd(const DatasetFolder& data, const GiocalConfig& confi
     v.options = options;
     v.relative_to_start = options.single_receiver;
     v.progress = [stop](double) { checkStop(stop); };
-    const Validation r = validateCalibration(in, ReferenceTrajectory(positionRows(ref.fixes)), v);
+    const Validation r =
+        validateCalibration(std::move(in), ReferenceTrajectory(positionRows(ref.fixes)), v);
     out.verdict = r.verdict;
     out.calibrated_m = r.calibrated_m;
     out.guess_m = r.guess_m;

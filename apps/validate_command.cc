@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
+#include <utility>
 
 #include "apps/run_validation.h"
 #include "common/calibration/calibration_inputs.h"
@@ -63,7 +64,7 @@ void runValidate(const ValidateJob& job, std::ostream& log) {
     progress.update(share);
     checkStop(job.stop);
   };
-  const Validation r = validateCalibration(in, trajectory, v);
+  const Validation r = validateCalibration(std::move(in), trajectory, v);
   progress.clear();
 
   nlohmann::ordered_json j;

@@ -47,7 +47,8 @@ std::vector<double> validationWindowStarts(const CalibrationInputs& in,
                                            double first_calibration_s, const ValidationJob& job);
 
 /// Throws std::runtime_error for a run whose calibration.csv is missing or a drive too short.
-Validation validateCalibration(const CalibrationInputs& in, const ReferenceTrajectory& reference,
+/// `in` is taken by value (move it in): each window's runs change its odometer stamps.
+Validation validateCalibration(CalibrationInputs in, const ReferenceTrajectory& reference,
                                const ValidationJob& job);
 
 }  // namespace giocal
