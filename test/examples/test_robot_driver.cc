@@ -1,7 +1,6 @@
 // examples/robot_driver.cc with --state: a robot's second drive resumes from the calibration its
 // first drive saved, and a state file cut by a power failure starts the drive cold, not never.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -9,25 +8,15 @@
 #include <regex>
 #include <string>
 
+#include "../cli/run_giocal.h"
 #include "sim/simulator.h"
 #include "temp_dir.h"
 
 namespace giocal {
 namespace {
 
-struct Output {
-  std::string text;
-  int code = -1;
-};
-
-Output runExample(const std::string& args) {
-  const std::string cmd = std::string(ROBOT_DRIVER_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  Output r;
-  char buf[512];
-  while (p && std::fgets(buf, sizeof(buf), p)) r.text += buf;
-  if (p) r.code = WEXITSTATUS(pclose(p));
-  return r;
+test::GiocalResult runExample(const std::string& args) {
+  return test::runProgram(ROBOT_DRIVER_BINARY, args);
 }
 
 // The sigma of s_w the node printed at its first timer with a calibration.
@@ -46,19 +35,19 @@ TEST(RobotDriverExample, ASecondDriveResumesFromTheFirstsSavedCalibration) {
   sim::writeDataset(sim::simulate(cfg, 4512), dir.file("drive2"));
   const std::string state = dir.file("state.json");
 
-  const Output cold = runExample(dir.file("drive2") + " ekf");
-  ASSERT_EQ(cold.code, 0) << cold.text;
-  const Output first = runExample(dir.file("drive1") + " ekf --state " + state);
-  ASSERT_EQ(first.code, 0) << first.text;
-  EXPECT_NE(first.text.find("cold start"), std::string::npos) << first.text;
+  const test::GiocalResult cold = runExample(dir.file("drive2") + " ekf");
+  ASSERT_EQ(cold.code, 0) << cold.out;
+  const test::GiocalResult first = runExample(dir.file("drive1") + " ekf --state " + state);
+  ASSERT_EQ(first.code, 0) << first.out;
+  EXPECT_NE(first.out.find("cold start"), std::string::npos) << first.out;
   ASSERT_TRUE(std::filesystem::exists(state));
 
-  const Output second = runExample(dir.file("drive2") + " ekf --state " + state);
-  ASSERT_EQ(second.code, 0) << second.text;
-  EXPECT_NE(second.text.find("resumed from " + state), std::string::npos) << second.text;
+  const test::GiocalResult second = runExample(dir.file("drive2") + " ekf --state " + state);
+  ASSERT_EQ(second.code, 0) << second.out;
+  EXPECT_NE(second.out.find("resumed from " + state), std::string::npos) << second.out;
   // Drive 2 starts knowing what drive 1 learned: its first s_w sigma is far below the cold
   // start's (measured 0.0021 against 0.0200, the prior's sigma until the first turns).
-  const double sd_cold = firstSigmaSw(cold.text), sd_warm = firstSigmaSw(second.text);
+  const double sd_cold = firstSigmaSw(cold.out), sd_warm = firstSigmaSw(second.out);
   std::printf("first s_w sigma: cold %.4f, resumed %.4f\n", sd_cold, sd_warm);
   EXPECT_LT(sd_warm, 0.5 * sd_cold);
 
@@ -69,10 +58,10 @@ TEST(RobotDriverExample, ASecondDriveResumesFromTheFirstsSavedCalibration) {
     text.assign(std::istreambuf_iterator<char>(in), {});
   }
   std::ofstream(state) << text.substr(0, text.size() / 2);
-  const Output cut = runExample(dir.file("drive2") + " ekf --state " + state);
-  ASSERT_EQ(cut.code, 0) << cut.text;
-  EXPECT_NE(cut.text.find("cold start"), std::string::npos) << cut.text;
-  EXPECT_EQ(cut.text.find("resumed"), std::string::npos) << cut.text;
+  const test::GiocalResult cut = runExample(dir.file("drive2") + " ekf --state " + state);
+  ASSERT_EQ(cut.code, 0) << cut.out;
+  EXPECT_NE(cut.out.find("cold start"), std::string::npos) << cut.out;
+  EXPECT_EQ(cut.out.find("resumed"), std::string::npos) << cut.out;
 }
 
 }  // namespace
