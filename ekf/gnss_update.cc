@@ -308,11 +308,12 @@ void GnssUpdate::resolveAmbiguities(CalibrationFilter& f, const DdEpoch& ep,
     ++rep.fixes_rejected;
     if (!check.exclude) return;
     ++rep.fix_exclusions;
+    const std::vector<SatId> left_out{*check.exclude};
     std::vector<DdObservation> rest;
     for (const DdObservation& o : phase_rows) {
-      if (o.sat != *check.exclude) rest.push_back(o);
+      if (!rowExcluded(o, left_out)) rest.push_back(o);
     }
-    resolveAmbiguities(f, ep, rest, rep, {*check.exclude});
+    resolveAmbiguities(f, ep, rest, rep, left_out);
     return;
   }
   s.condition(held);
