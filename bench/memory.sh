@@ -2,7 +2,10 @@
 # Peak resident memory and speed of `giocal calibrate` on the field preset at its own length
 # (10 laps, about 20 minutes) and extended to about 3 hours (87 laps), for both estimators: the
 # online calibrator reads the files sample by sample, so memory must not grow with the drive.
-# Usage: bench/memory.sh [seed] [laps_long] [estimators...]   (needs scripts/setup.sh's build)
+# calibrate's validation at its end holds the drive in memory (docs/results.md): left out
+# (--no-validate) unless VALIDATE=1.
+# Usage: [VALIDATE=1] bench/memory.sh [seed] [laps_long] [estimators...]   (needs scripts/setup.sh's
+#        build)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 giocal="$root/build/apps/giocal"
@@ -24,13 +27,15 @@ simulate() {  # laps -> dataset folder
   echo "$work/data_$laps"
 }
 
+validation=(--no-validate)
+[ "${VALIDATE:-}" = 1 ] && validation=()
 printf "%-4s %6s %10s %10s %10s %12s\n" est laps "data s" "wall s" "x real" "peak RSS MB"
 for laps in 10 "$laps_long"; do
   data="$(simulate "$laps")"
   for est in "${estimators[@]}"; do
     out="$work/out_${est}_$laps"
     /usr/bin/time -f "%M" -o "$work/rss" "$giocal" calibrate --data "$data" --estimator "$est" \
-      --out "$out" > /dev/null
+      --out "$out" "${validation[@]}" > /dev/null
     python3 - "$out/summary.json" "$work/rss" "$est" "$laps" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
