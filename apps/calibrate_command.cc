@@ -60,7 +60,7 @@ void printCalibrationSummary(const CalibrationRun& run, const OdometerCalibratio
     }
   }
   if (truth) out << "  NEES (7 observable states) " << std::setprecision(2) << err.nees7 << "\n";
-  out << "  p_b_m.z: " << run.p_b_m_z << "\n";
+  out << "  lever arm along the vertical: " << run.p_b_m_z << "\n";
   out << std::setprecision(1) << "  GNSS epochs " << run.gnss_epochs << ", fix rate "
       << 100.0 * run.fixRate() << " %; " << std::setprecision(3) << run.wall_time_s << " s for "
       << std::setprecision(1) << run.data_duration_s << " s of data (" << std::setprecision(0)

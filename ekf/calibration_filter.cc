@@ -99,9 +99,12 @@ std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
 
 void CalibrationFilter::reopenCalibration() {
   // Adding the prior covariance keeps P positive semi-definite and the correlations; the held
-  // p_b_m.z keeps its prior variance.
+  // vertical lever arm (verticalLeverState) keeps its prior variance.
   Eigen::Matrix<double, 8, 8> add = priorCalibrationCovariance(dataset_.initial_calibration);
-  if (options_.hold_p_b_m_z) add(calib_index::kP + 2, calib_index::kP + 2) = 0.0;
+  if (options_.hold_p_b_m_z) {
+    const int v = verticalLeverState(dataset_.initial_calibration);
+    add(v, v) = 0.0;
+  }
   add.topLeftCorner(2, 2).setZero();
   const std::array<int, 8> idx = calibrationIndices(s_);
   double trace = 0.0;

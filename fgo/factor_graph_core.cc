@@ -82,7 +82,8 @@ void FactorGraphCore::start(const InitialState& init) {
   w_.addVariable(vectorBlock(kPbm), prior.mean.p_b_m);
   w_.addVariable(rotationBlock(kQbm), q_bm);
   w_.addVariable(vectorBlock(kPbg), in_.description.p_b_g);
-  if (holds(calib_index::kP + 2)) w_.holdComponents(kPbm, {2});
+  const int vertical = verticalLeverState(prior);
+  if (holds(vertical)) w_.holdComponents(kPbm, {vertical - calib_index::kP});
   // The initial state and the calibration prior, with their cross-covariance (heading).
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(23, 23);
   P.topLeftCorner(15, 15) = init.P_nav;

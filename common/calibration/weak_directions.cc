@@ -25,7 +25,7 @@ const char* motionThatInforms(int k) {
       "turning: more turns, at a higher yaw rate",
       "turns in both directions at varying yaw rate, where the lever arm shows as w x p",
       "turns in both directions at varying yaw rate, where the lever arm shows as w x p",
-      "",  // p_b_m.z: said apart (planar motion)
+      "turns in both directions at varying yaw rate, where the lever arm shows as w x p",
       "turns, where the IMU sees the turning axis tilted",
       "turns, and driving at speed, which a pitch tilts into the vertical",
       "accelerating and braking on straights, turns in both directions and stops, which split "
@@ -33,10 +33,18 @@ const char* motionThatInforms(int k) {
   return kMotion.at(static_cast<size_t>(k));
 }
 
+int verticalLeverState(const CalibrationPrior& prior) {
+  // A mount tilted by a few degrees still has one b axis along the vehicle's vertical; the
+  // projection of the motion models (PlanarMotionProjection) uses the exact direction.
+  int axis = 0;
+  (prior.mean.q_b_m * Eigen::Vector3d::UnitZ()).cwiseAbs().maxCoeff(&axis);
+  return calib_index::kP + axis;
+}
+
 std::vector<int> heldStates(const CalibrationOptions& options, const DatasetDescription& d) {
   std::vector<int> held;
   if (!d.odom_noise.measures_yaw_rate) held.push_back(calib_index::kSw);
-  if (options.hold_p_b_m_z) held.push_back(calib_index::kP + 2);
+  if (options.hold_p_b_m_z) held.push_back(verticalLeverState(d.initial_calibration));
   return held;
 }
 
@@ -47,8 +55,9 @@ std::vector<int> weakStates(const CalibrationEstimate& final, const CalibrationP
   const Eigen::Matrix<double, 8, 1> sd0 =
       CalibrationEstimate{0.0, prior.mean, priorCalibrationCovariance(prior)}.sigma();
   std::vector<int> out;
+  const int vertical = verticalLeverState(prior);
   for (int k = 0; k < 8; ++k) {
-    if (k == calib_index::kP + 2 || std::count(held.begin(), held.end(), k) || sd0(k) <= 0.0 ||
+    if (k == vertical || std::count(held.begin(), held.end(), k) || sd0(k) <= 0.0 ||
         !(sd(k) > fraction * sd0(k))) {
       continue;
     }

@@ -47,10 +47,16 @@ Calibrator::Calibrator(std::string estimator, const DatasetDescription& dataset,
   }
   run_.estimator = std::move(estimator);
   run_.robot = robotFingerprint(dataset);
-  run_.p_b_m_z =
-      options.hold_p_b_m_z
-          ? "held at the prior: planar motion leaves it unobservable"
-          : "estimated; unobservable under planar motion, its sigma stays near the prior";
+  // The component along the vehicle's vertical: p_b_m.z for an IMU mounted z up.
+  const std::string vertical =
+      calibrationStateName(verticalLeverState(dataset.initial_calibration));
+  run_.p_b_m_z = options.hold_p_b_m_z
+                     ? vertical +
+                           " (the vehicle's vertical) held at the prior: planar motion leaves it "
+                           "unobservable"
+                     : vertical +
+                           " (the vehicle's vertical) estimated; unobservable under planar motion, "
+                           "its sigma stays near the prior";
   for (int c = 0; c < static_cast<int>(Counter::kSize); ++c) run_.count(Counter(c), 0);
   buf_.description = dataset;
   buf_.base_e = base_e;

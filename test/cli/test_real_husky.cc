@@ -134,9 +134,17 @@ TEST(RealHusky, DefaultsWeighTheWanderingHeightsByWhatTheDriveShows) {
             kDegToRad) *
         Eigen::Vector3d::UnitZ();
     EXPECT_LT(std::acos(std::min(1.0, up.dot(up_guess))) * kRadToDeg, 5.0);
-    // Checked on the drive against its fixes (60 s outages at 5 windows), 2026-11-27: EKF 10.3 m
-    // against the guess's 8.1 m, factor graph 8.0 m against 8.0 m, both "no better". Validating
-    // better than the guess is open work ("Real logs decide"); no worse than this is asserted.
+    // The IMU lies on its side: the lever arm along its y (the vehicle's vertical) is the one held
+    // at the guess, and the other two stay on the robot (a Husky is 1 m by 0.7 m). Holding b's z,
+    // the vehicle's forward axis here, let p_b_m.y wander to 0.4 m (EKF) and 1.1 m.
+    const auto& p_b_m = s["final"]["p_b_m"];
+    EXPECT_EQ(p_b_m[1].get<double>(), 0.0);
+    EXPECT_LT(std::hypot(p_b_m[0].get<double>(), p_b_m[2].get<double>()), 0.5);
+    EXPECT_NE(s["p_b_m_z"].get<std::string>().find("p_b_m.y"), std::string::npos);
+    // Checked on the drive against its fixes (60 s outages at 5 windows), 2026-11-28: EKF 7.7 m
+    // against the guess's 8.1 m, factor graph 7.7 m against 8.0 m, both "no better" (ratio 0.95
+    // and 0.97; 1.27 and 1.01 with b's z held). Validating better than the guess is open work
+    // ("Real logs decide"); no worse than this is asserted.
     log.clear();
     ASSERT_EQ(run("validate --data " + data + " --gnss lc --pos " + pos + " --run " + out +
                       " --quiet --out " + dir.file(est + "_validate"),
@@ -146,7 +154,7 @@ TEST(RealHusky, DefaultsWeighTheWanderingHeightsByWhatTheDriveShows) {
     const nlohmann::json v = summary(dir.file(est + "_validate"));
     EXPECT_EQ(v["windows"].size(), 5u);
     EXPECT_NE(v["verdict"], "worse") << log;
-    EXPECT_LT(v["ratio"].get<double>(), est == "ekf" ? 1.35 : 1.1) << log;
+    EXPECT_LT(v["ratio"].get<double>(), 1.0) << log;
     EXPECT_LT(v["guess"].get<double>(), 10.0) << log;  // the aided stretches no longer tilt
   }
 }
