@@ -157,7 +157,7 @@ CalibrationRun runCalibrate(const CalibrateJob& job, std::ostream& log) {
   const std::map<std::string, double> robot = robotFingerprint(data.description);
   std::optional<StateFileSink> state;
   if (!job.state_out.empty()) sink = &state.emplace(sink, job.state_out, job.state_every_s, robot);
-  CalibrationRun run = replayFolder(data, replay, sink);
+  CalibrationRun run = replayCheckingPositions(data, replay, sink);
   if (state && run.latest) writeStateFile(job.state_out, *run.latest, robot);
   if (audit) audit->addTo(run);
   progress.clear();

@@ -58,7 +58,8 @@ bool runCompare(const CompareJob& job, std::ostream& log) {
                           job.quiet);
     LiveRunWriter writer(outputs, std::string(estimators[a]) + "/", estimators[a], log, &progress);
     const std::unique_ptr<FixAudit> audit = fixAuditOf(data, &writer);
-    runs[a] = replayFolder(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
+    runs[a] =
+        replayCheckingPositions(data, replay, audit ? static_cast<RunSink*>(audit.get()) : &writer);
     if (audit) audit->addTo(runs[a]);
     progress.clear();
     notePreparation(prepared, data, runs[a]);

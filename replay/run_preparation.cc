@@ -4,6 +4,7 @@
 
 #include "common/gnss/pos_reader.h"
 #include "common/io/text.h"
+#include "common/online/position_residual_sink.h"
 #include "replay/measured_delay.h"
 #include "replay/measured_heights.h"
 
@@ -39,6 +40,16 @@ void notePreparation(const RunPreparation& p, const DatasetFolder& data, Calibra
   run.lc_heights = p.heights;
   run.lc_height_scale_applied = p.height_scale_applied;
   if (p.height_scale_applied != 0.0) run.warn(appliedHeightScaleWarning(*p.heights));
+}
+
+CalibrationRun replayCheckingPositions(DatasetFolder& data, const ReplayJob& job, RunSink* sink) {
+  if (job.positions.empty()) return replayFolder(data, job, sink);
+  PositionResidualSink residuals(sink, readPosFile(job.positions), data.description.p_b_g);
+  CalibrationRun run = replayFolder(data, job, &residuals);
+  run.lc_residuals = residuals.result();
+  const std::string why = understatedSigmaWarning(*run.lc_residuals);
+  if (!why.empty()) run.warn(why);
+  return run;
 }
 
 bool usesSingleReceiver(const DatasetDescription& d, bool asked, const std::string& positions) {

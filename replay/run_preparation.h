@@ -1,6 +1,7 @@
 // RunPreparation: what is measured on a dataset's logs before calibrating and acted on, for
 // calibrate and compare alike: the odometer's delay (measured_delay.h) and, in the LC scheme, the
-// position solutions' heights (measured_heights.h).
+// position solutions' heights (measured_heights.h); after it, how well those solutions support
+// the run's sigmas (position_residuals.h).
 #pragma once
 
 #include <iosfwd>
@@ -32,5 +33,10 @@ RunPreparation prepareRun(DatasetFolder& data, ReplayJob& job, std::ostream& log
 
 /// Puts what the preparation did into the run's summary and warnings.
 void notePreparation(const RunPreparation& p, const DatasetFolder& data, CalibrationRun& run);
+
+/// replayFolder, with the LC scheme's solutions checked against the trajectory as it streams
+/// past (PositionResidualSink): run.lc_residuals, and a warning when they support much less than
+/// the run's sigmas assume.
+CalibrationRun replayCheckingPositions(DatasetFolder& data, const ReplayJob& job, RunSink* sink);
 
 }  // namespace giocal

@@ -222,6 +222,15 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
                        {"applied_scale", run.lc_height_scale_applied}};
     if (!h.decided) j["lc_heights"]["why_not"] = h.why_not;
   }
+  if (run.lc_residuals) {
+    const PositionResiduals& r = *run.lc_residuals;
+    j["lc_residuals"] = {{"fixes", r.fixes},
+                         {"interval_s", r.interval_s},
+                         {"sigma_ratio", r.sigma_ratio},
+                         {"correlation_s", r.correlation_s},
+                         {"fixes_per_independent", r.inflation},
+                         {"sigmas_understated_by", r.understatedBy()}};
+  }
   if (!run.robot.empty()) j["robot"] = run.robot;
   if (run.validation) {
     const RunValidation& v = *run.validation;

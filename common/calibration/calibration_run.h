@@ -14,6 +14,7 @@
 
 #include "common/calibration/fix_heights.h"
 #include "common/calibration/odometer_delay.h"
+#include "common/calibration/position_residuals.h"
 #include "common/calibration/run_counter.h"
 #include "common/geodesy/wgs84.h"
 #include "common/imu/nav_state.h"
@@ -94,6 +95,9 @@ struct CalibrationRun {
   // (fix_heights.h), and the scale this run put on their height sigmas (0: none).
   std::optional<FixHeights> lc_heights;
   double lc_height_scale_applied = 0.0;
+  // The LC solutions against the run's trajectory (position_residuals.h): how far the run's
+  // sigmas understate what they support.
+  std::optional<PositionResiduals> lc_residuals;
   // The robot the calibration belongs to (warm_start.h's robotFingerprint of dataset.yaml): a
   // later drive's --prior is refused when it differs.
   std::map<std::string, double> robot;
