@@ -1,11 +1,10 @@
 #include "apps/run_validation.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
 #include "apps/dataset_rtk.h"
-#include "common/gnss/broadcast_orbits.h"
-#include "common/gnss/tdcp_track.h"
 #include "evaluation/validation.h"
 
 namespace giocal {
@@ -37,19 +36,19 @@ std::vector<PositionFix> rtkFixes(const CalibrationInputs& in, const GiocalConfi
   return fixes;
 }
 
-/// One receiver's own track (single point positions joined by time-differenced phase), a new
-/// stretch (another single point position's offset) kept only from more than a second after the
-/// last point of the one before: a gap, so that no window's comparison crosses the jump.
-std::vector<PositionFix> ownTrack(const CalibrationInputs& in, const SingleReceiverOptions& o) {
-  const BroadcastOrbits orbits(in.nav);
-  TdcpTrack track(orbits, o.tdcp, o.position_sigma_min_m);
+/// One receiver's own track (addSingleReceiverTrack's, in in.positions), a new stretch (another
+/// single point position's offset) kept only from more than a second after the last point of the
+/// one before: a gap, so that no window's comparison crosses the jump.
+std::vector<PositionFix> ownTrack(const CalibrationInputs& in) {
   std::vector<PositionFix> fixes;
   double skip_until = -INFINITY;
-  for (const ObsEpoch& e : in.rover.epochs) {
-    const std::optional<PositionFix> fix = track.add(e);
-    if (!fix) continue;
-    if (track.startedStretch() && !fixes.empty()) skip_until = fixes.back().t + kStretchGapS;
-    if (fix->t > skip_until) fixes.push_back(*fix);
+  auto restart = in.track_restarts.begin();
+  for (size_t k = 0; k < in.positions.size(); ++k) {
+    if (restart != in.track_restarts.end() && *restart == k) {
+      ++restart;
+      if (!fixes.empty()) skip_until = fixes.back().t + kStretchGapS;
+    }
+    if (in.positions[k].t > skip_until) fixes.push_back(in.positions[k]);
   }
   return fixes;
 }
@@ -61,7 +60,7 @@ ValidationReference validationReference(const CalibrationInputs& in, const Gioca
                                         const StopRequest* stop, bool single) {
   ValidationReference r;
   if (single) {
-    r.fixes = ownTrack(in, config.calibration.single);
+    r.fixes = ownTrack(in);
     r.name =
         "the rover's own track (single point positions joined by time-differenced phase; "
         "errors taken from each window's start)";

@@ -21,9 +21,10 @@ struct ValidationReference {
 };
 
 /// The dataset's fixed RTK solutions (written to `pos`), with `positions` the LC solutions
-/// already in `in`, or with `single` the rover's own track (whose offset is metres: the windows
-/// compare displacements from their start). Throws std::runtime_error when it has fewer than two
-/// rows, or when the dataset has no base and neither is asked for.
+/// already in `in`, or with `single` the rover's own track already in `in`
+/// (addSingleReceiverTrack; its offset is metres: the windows compare displacements from their
+/// start). Throws std::runtime_error when it has fewer than two rows, or when the dataset has no
+/// base and neither is asked for.
 ValidationReference validationReference(const CalibrationInputs& in, const GiocalConfig& config,
                                         const std::string& positions, const std::string& pos,
                                         const StopRequest* stop, bool single = false);

@@ -102,8 +102,13 @@ void addSingleReceiverTrack(CalibrationInputs& in, const SingleReceiverOptions& 
   const BroadcastOrbits orbits(in.nav);
   TdcpTrack track(orbits, options.tdcp, options.position_sigma_min_m);
   in.positions.clear();
+  in.track_restarts.clear();
   for (const ObsEpoch& e : in.rover.epochs) {
-    if (const std::optional<PositionFix> fix = track.add(e)) in.positions.push_back(*fix);
+    const std::optional<PositionFix> fix = track.add(e);
+    if (!fix) continue;
+    if (track.startedStretch() && !in.positions.empty())
+      in.track_restarts.push_back(in.positions.size());
+    in.positions.push_back(*fix);
   }
   if (in.positions.empty()) {
     throw std::runtime_error(

@@ -28,7 +28,10 @@ struct CalibrationInputs {
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   std::optional<TruthCalibration> truth;  // from truth_calib.yaml, if the folder has one
   std::vector<PositionFix> positions;     // antenna position solutions (the LC scheme)
-  std::vector<std::string> warnings;      // recoverable damage the readers dropped
+  // With addSingleReceiverTrack: the indices of `positions` where the track began a new stretch
+  // (its offset another single point position's, a jump of metres).
+  std::vector<size_t> track_restarts;
+  std::vector<std::string> warnings;  // recoverable damage the readers dropped
 
   /// Time span covered by both the IMU and the rover observations [s].
   double dataDuration() const;
