@@ -22,9 +22,6 @@
 
 namespace giocal {
 
-namespace {
-
-/// Registry indices of the calibration's tangent coordinates, in calib_index order.
 std::array<int, 8> calibrationIndices(const StateRegistry& s) {
   std::array<int, 8> idx{};
   idx[calib_index::kSv] = s.offset(state::kSv);
@@ -36,8 +33,6 @@ std::array<int, 8> calibrationIndices(const StateRegistry& s) {
   return idx;
 }
 
-}  // namespace
-
 CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
                                      const DatasetDescription& dataset,
                                      const std::vector<ImuSample>& imu, const InitialState& init)
@@ -48,7 +43,8 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
       motion_(withImuNoise(options.models.motion, dataset.imu_noise.gyro_noise_density,
                            dataset.imu_noise.accel_noise_density)),
       t_(init.x.t),
-      motion_fed_t_(init.x.t) {
+      motion_fed_t_(init.x.t),
+      held_states_(heldStates(options, dataset)) {
   // Navigation first, in the order of the IMU residual (p, theta, v, b_a, b_g), then calibration.
   // A copy, not a block: P may be a temporary converted from a fixed-size matrix.
   const auto blk = [](const Eigen::MatrixXd& P, int i, int n) -> Eigen::MatrixXd {
@@ -91,6 +87,16 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
   }
 }
 
+UpdateResult CalibrationFilter::updatePlanar(const MeasurementModel& model,
+                                             const std::vector<StateKey>& keys, double chi2_gate,
+                                             double gyro_variance) {
+  if (!options_.hold_p_b_m_z) return update(model, keys, chi2_gate, gyro_variance);
+  // The projection borrows the model for this call (an empty owner: nothing allocated).
+  const PlanarMotionProjection projected(
+      std::shared_ptr<const MeasurementModel>(std::shared_ptr<void>(), &model));
+  return update(projected, keys, chi2_gate, gyro_variance);
+}
+
 std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
     std::shared_ptr<const MeasurementModel> model) const {
   if (!options_.hold_p_b_m_z) return model;
@@ -114,70 +120,6 @@ void CalibrationFilter::reopenCalibration() {
   if (trace >= add.trace()) return;
   for (int a = 0; a < 8; ++a)
     for (int b = 0; b < 8; ++b) s_.covariance()(idx[a], idx[b]) += add(a, b);
-}
-
-std::vector<int> CalibrationFilter::heldIndices() const {
-  if (options_.hold_calibration) {
-    const std::array<int, 8> idx = calibrationIndices(s_);
-    std::vector<int> held(idx.begin(), idx.end());
-    if (s_.has(state::kTdOdo)) held.push_back(s_.offset(state::kTdOdo));
-    if (s_.has(state::kGyroTilt)) {
-      for (int k = 0; k < 2; ++k) held.push_back(s_.offset(state::kGyroTilt) + k);
-    }
-    return held;
-  }
-  // States the run keeps at the prior (p_b_m.z in planar motion, a speed-only odometer's s_w).
-  const std::array<int, 8> idx = calibrationIndices(s_);
-  std::vector<int> held;
-  for (int k : heldStates(options_, dataset_)) held.push_back(idx[static_cast<size_t>(k)]);
-  return held;
-}
-
-MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
-                                        const std::vector<StateKey>& keys,
-                                        double gyro_variance) const {
-  MeasurementRows rows = linearize(model, s_.bind(keys), s_.dim());
-  if (gyro_variance > 0.0) {
-    const Eigen::MatrixXd H_bg = rows.H.middleCols(s_.offset(state::kBg), 3);
-    rows.R += gyro_variance * H_bg * H_bg.transpose();
-  }
-  return rows;
-}
-
-UpdateResult CalibrationFilter::update(const MeasurementModel& model,
-                                       const std::vector<StateKey>& keys, double chi2_gate,
-                                       double gyro_variance, int iterations) {
-  if (iterations <= 1) return updateLinearized(rows(model, keys, gyro_variance), chi2_gate);
-  // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
-  // state, keep the prior covariance; the last iteration's gain updates the covariance.
-  // Assigned, not constructed: the copy reuses the storage of the last update's (a registry
-  // constructed here allocated once per variable, about 55 times per odometer interval).
-  iterate_prior_ = s_;
-  const StateRegistry& prior = iterate_prior_;
-  UpdateResult r;
-  for (int it = 0; it < iterations; ++it) {
-    MeasurementRows lin = rows(model, keys, gyro_variance);
-    const Eigen::VectorXd delta = s_.minus(prior);
-    lin.residual += lin.H * (-delta);  // residual linearized about the prior: r(x_i) - H d_i
-    // Values and covariance back to the prior's, then updated in place (whole-registry copies
-    // per iteration cost more than the update itself).
-    s_.setValues(prior);
-    s_.covariance() = prior.covariance();
-    r = kalmanUpdate(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
-                     &workspace_);
-    numerical_failures_ += r.numerical_failure;
-    if (!r.accepted) return r;  // s_ holds the prior again
-    s_.correct(r.dx);
-    if (r.dx.size() && (r.dx - delta).norm() < 1e-9) break;
-  }
-  return r;
-}
-
-UpdateResult CalibrationFilter::updateLinearized(const MeasurementRows& rows, double chi2_gate) {
-  const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
-  numerical_failures_ += r.numerical_failure;
-  if (r.accepted) s_.correct(r.dx);
-  return r;
 }
 
 CalibrationFilter::Gyro CalibrationFilter::gyroAt(double t) const {
@@ -323,7 +265,8 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
   const Gyro gyro = gyroMean(sample.t, 0.5 * options_.models.motion.window_s);
 
   if (still) {
-    update(ZuptModel(options_.models.zupt_sigma), {state::kV},
+    static const std::vector<StateKey> kZuptKeys{state::kV};
+    update(ZuptModel(options_.models.zupt_sigma), kZuptKeys,
            chi2Quantile(options_.chi2_probability, 3));
     if (!s_.has(kHeadingClone)) {
       s_.clone(state::kQ, kHeadingClone);
@@ -337,9 +280,10 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
   if (nhc) {
     // The mean rate over the window: a single noisy sample in the lever-arm term would bias the
     // extrinsic (errors in variables).
-    update(*planar(std::make_shared<NhcModel>(gyro.rate, options_.models.nhc_sigma)),
-           {state::kV, state::kQ, state::kBg, state::kPbm, state::kQbm},
-           chi2Quantile(options_.chi2_probability, 2), gyro.variance);
+    static const std::vector<StateKey> kNhcKeys{state::kV, state::kQ, state::kBg, state::kPbm,
+                                                state::kQbm};
+    updatePlanar(NhcModel(gyro.rate, options_.models.nhc_sigma), kNhcKeys,
+                 chi2Quantile(options_.chi2_probability, 2), gyro.variance);
   }
   return step;
 }

@@ -3,6 +3,7 @@
 // updates. GNSS epochs are handled by GnssUpdate (ekf/gnss_update.h) through update().
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ struct OdometerStep {
   bool reopened = false;  // max_odometer_rejections in a row before it: the extrinsic
                           // covariance was increased by the prior's first
 };
+
+/// Registry indices of the calibration's tangent coordinates, in calib_index order.
+std::array<int, 8> calibrationIndices(const StateRegistry& s);
 
 class CalibrationFilter {
  public:
@@ -118,10 +122,17 @@ class CalibrationFilter {
   /// the covariance of p_b_m and q_b_m grows by their prior covariance, the means stay. Not
   /// when it is already at least the prior's (a broken odometer must not grow it forever).
   void reopenCalibration();
-  std::vector<int> heldIndices() const;
+  /// The error-state indices of the held states, into held_ (its storage reused).
+  const std::vector<int>& heldIndices();
+  /// rows() into lin_, with the storage of the last update's (no allocation once it has grown).
+  void linearizeRows(const MeasurementModel& model, const std::vector<StateKey>& keys,
+                     double gyro_variance);
   /// With p_b_m.z held (planar motion), models of the vehicle's motion are made blind to p_b_m
   /// along the vehicle's vertical axis (common/models/planar_motion_projection.h).
   std::shared_ptr<const MeasurementModel> planar(std::shared_ptr<const MeasurementModel> m) const;
+  /// update() of a vehicle-motion model as planar() would wrap it, without allocating.
+  UpdateResult updatePlanar(const MeasurementModel& model, const std::vector<StateKey>& keys,
+                            double chi2_gate, double gyro_variance);
   void feedMotion(double t);  // bias-compensated IMU samples up to t into the motion detector
   /// The IMU preintegrated from time() to t; each sample is integrated once however often it
   /// is asked for (trajectory output, then the next update).
@@ -146,6 +157,13 @@ class CalibrationFilter {
   long numerical_failures_ = 0;
   KalmanWorkspace workspace_;
   StateRegistry iterate_prior_;  // the iterated update's prior, kept for its storage
+  // An update's working storage, kept from one update to the next.
+  std::vector<int> held_states_;  // heldStates() of the options and dataset (calibration order)
+  std::vector<int> held_;
+  std::vector<BlockBinding> bindings_;
+  LinearizeScratch scratch_;
+  MeasurementRows lin_;
+  Eigen::VectorXd delta_, h_delta_;
 };
 
 }  // namespace giocal

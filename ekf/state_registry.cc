@@ -146,12 +146,17 @@ Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
 std::vector<BlockBinding> StateRegistry::bind(const std::vector<StateKey>& keys) const {
   std::vector<BlockBinding> out;
   out.reserve(keys.size());
+  bind(keys, out);
+  return out;
+}
+
+void StateRegistry::bind(const std::vector<StateKey>& keys, std::vector<BlockBinding>& out) const {
+  out.clear();
   for (const StateKey& k : keys) {
     const Variable* v = find(k);
     if (!v) throw std::out_of_range("no state variable '" + k.str() + "' to bind");
     out.push_back({v->value.data(), v->offset});
   }
-  return out;
 }
 
 }  // namespace giocal

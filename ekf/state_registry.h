@@ -55,6 +55,8 @@ class StateRegistry {
   /// Bindings of a model's blocks to the variables `keys[k]` (throws for an unknown key); a known
   /// variable binds with error offset -1, so it enters the model as a constant.
   std::vector<BlockBinding> bind(const std::vector<StateKey>& keys) const;
+  /// The same into `out`, reusing its storage.
+  void bind(const std::vector<StateKey>& keys, std::vector<BlockBinding>& out) const;
 
  private:
   struct Variable {

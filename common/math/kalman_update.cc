@@ -33,13 +33,16 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
     out.numerical_failure = true;
     return out;
   }
-  const Eigen::VectorXd innovation = -rows.residual;
-  const Eigen::VectorXd s_innovation = llt.solve(innovation);
+  Eigen::Map<Eigen::VectorXd> innovation(ws.matrix(KalmanWorkspace::kInnovation, m, 1).data(), m);
+  innovation = -rows.residual;
+  Eigen::Map<Eigen::VectorXd> s_innovation(ws.matrix(KalmanWorkspace::kSInnovation, m, 1).data(),
+                                           m);
+  s_innovation = innovation;
+  llt.solveInPlace(s_innovation);
   out.nis = innovation.dot(s_innovation);
   if (!(out.nis <= chi2_gate)) return out;
-  Eigen::VectorXd gain_innovation = PHt * s_innovation;  // K0 v, K0 = P H^T S^-1 never formed
-  for (int i : held) gain_innovation[i] = 0.0;
-  out.dx = gain_innovation;
+  out.dx.noalias() = PHt * s_innovation;  // K0 v, K0 = P H^T S^-1 never formed
+  for (int i : held) out.dx[i] = 0.0;
   // Joseph form (I-KH) P (I-KH)^T + K R K^T with the optimal gain K0 = PH^T S^-1 and K = D K0,
   // D the mask of the states that are not held: with M = K0 S K0^T = K0 (PH^T)^T it expands to
   // P - D M - M D + D M D, which is P - M except on the held x held block, where it is P.
@@ -50,7 +53,8 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   // on the diagonal, and undone (from this copy) rather than kept.
   Eigen::Map<Eigen::MatrixXd> P_before = ws.matrix(KalmanWorkspace::kPBefore, n, n);
   P_before = P;
-  Eigen::MatrixXd P_held(held.size(), held.size());
+  const auto n_held = static_cast<Eigen::Index>(held.size());
+  Eigen::Map<Eigen::MatrixXd> P_held = ws.matrix(KalmanWorkspace::kPHeld, n_held, n_held);
   for (size_t a = 0; a < held.size(); ++a)
     for (size_t b = 0; b < held.size(); ++b) P_held(a, b) = P(held[a], held[b]);
   P.selfadjointView<Eigen::Lower>().rankUpdate(W.transpose(), -1.0);

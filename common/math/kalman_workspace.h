@@ -14,7 +14,7 @@ namespace giocal {
 /// the EKF's time, measured with glibc's trimming turned off); kept here, they are allocated once.
 class KalmanWorkspace {
  public:
-  enum Slot : std::size_t { kPHt, kS, kW, kPBefore, kSlots };
+  enum Slot : std::size_t { kPHt, kS, kW, kPBefore, kInnovation, kSInnovation, kPHeld, kSlots };
   /// A rows x cols matrix over the slot's buffer; its coefficients are unspecified.
   Eigen::Map<Eigen::MatrixXd> matrix(Slot slot, Eigen::Index rows, Eigen::Index cols) {
     std::vector<double>& b = buffers_[slot];

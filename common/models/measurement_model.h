@@ -21,11 +21,15 @@ class MeasurementModel {
 
   /// residual = h(x) - z. params[k] holds block k's ambient values. When `jacobians` is given it
   /// receives, per block, d residual / d (tangent perturbation) of size residualSize x tangentSize.
+  /// A model may write into the given residual and Jacobians in place (no allocation when a
+  /// caller hands back the same ones, sized by the last call).
   virtual void evaluate(const double* const* params, Eigen::VectorXd& residual,
                         std::vector<Eigen::MatrixXd>* jacobians) const = 0;
 
   /// Covariance of the residual (of the measurement noise).
   virtual Eigen::MatrixXd covariance() const = 0;
+  /// The same into R, which a model may fill in place.
+  virtual void covarianceInto(Eigen::MatrixXd& R) const { R = covariance(); }
 };
 
 }  // namespace giocal

@@ -6,18 +6,23 @@ namespace giocal {
 
 MeasurementRows linearize(const MeasurementModel& model, const std::vector<BlockBinding>& bindings,
                           int error_state_size) {
+  MeasurementRows rows;
+  LinearizeScratch scratch;
+  linearize(model, bindings, error_state_size, rows, scratch);
+  return rows;
+}
+
+void linearize(const MeasurementModel& model, const std::vector<BlockBinding>& bindings,
+               int error_state_size, MeasurementRows& rows, LinearizeScratch& scratch) {
   const auto& blocks = model.blocks();
   if (bindings.size() != blocks.size()) {
     throw std::invalid_argument(model.name() + ": " + std::to_string(bindings.size()) +
                                 " bindings for " + std::to_string(blocks.size()) + " blocks");
   }
-  std::vector<const double*> params;
-  params.reserve(bindings.size());  // one allocation, not one per doubling
-  for (const auto& b : bindings) params.push_back(b.value);
-  MeasurementRows rows;
-  std::vector<Eigen::MatrixXd> J;
-  model.evaluate(params.data(), rows.residual, &J);
-  rows.H = Eigen::MatrixXd::Zero(model.residualSize(), error_state_size);
+  scratch.params.clear();
+  for (const auto& b : bindings) scratch.params.push_back(b.value);
+  model.evaluate(scratch.params.data(), rows.residual, &scratch.J);
+  rows.H.setZero(model.residualSize(), error_state_size);
   for (size_t k = 0; k < blocks.size(); ++k) {
     const int off = bindings[k].error_offset;
     if (off < 0) continue;
@@ -25,10 +30,9 @@ MeasurementRows linearize(const MeasurementModel& model, const std::vector<Block
       throw std::out_of_range(model.name() + ": block " + blocks[k].key.str() +
                               " outside the state");
     }
-    rows.H.middleCols(off, blocks[k].tangentSize()) += J[k];
+    rows.H.middleCols(off, blocks[k].tangentSize()) += scratch.J[k];
   }
-  rows.R = model.covariance();
-  return rows;
+  model.covarianceInto(rows.R);
 }
 
 }  // namespace giocal

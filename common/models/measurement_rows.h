@@ -26,4 +26,15 @@ struct MeasurementRows {
 MeasurementRows linearize(const MeasurementModel& model, const std::vector<BlockBinding>& bindings,
                           int error_state_size);
 
+/// What linearize() works in, kept by a caller from one call to the next.
+struct LinearizeScratch {
+  std::vector<const double*> params;
+  std::vector<Eigen::MatrixXd> J;
+};
+
+/// The same into `rows`, reusing its storage and `scratch`'s: once they have the sizes, nothing
+/// is allocated here (the model's own evaluate() aside).
+void linearize(const MeasurementModel& model, const std::vector<BlockBinding>& bindings,
+               int error_state_size, MeasurementRows& rows, LinearizeScratch& scratch);
+
 }  // namespace giocal

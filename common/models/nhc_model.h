@@ -19,6 +19,7 @@ class NhcModel : public MeasurementModel {
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
                 std::vector<Eigen::MatrixXd>* jacobians) const override;
   Eigen::MatrixXd covariance() const override;
+  void covarianceInto(Eigen::MatrixXd& R) const override;
 
  private:
   Eigen::Vector3d gyro_;

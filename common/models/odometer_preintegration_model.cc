@@ -44,8 +44,10 @@ bool OdometerPreintegrationModel::informsLeverArm(const Eigen::Quaterniond& q_i,
                          n.lever_arm_min_turn);
 }
 
-Eigen::MatrixXd OdometerPreintegrationModel::whitenerAt(double s_v, double s_w) const {
-  return whitener(pre_->covarianceAt(s_v, s_w).topLeftCorner(rows_, rows_), name());
+OdometerPreintegrationModel::Whitener OdometerPreintegrationModel::whitenerAt(double s_v,
+                                                                              double s_w) const {
+  const Whitener C = pre_->covarianceAt(s_v, s_w).topLeftCorner(rows_, rows_);
+  return whitenerOf(C, [this] { return name(); });
 }
 
 OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odometer,
@@ -63,6 +65,8 @@ OdometerPreintegrationNoise odometerPreintegrationNoise(const OdometerNoise& odo
 
 void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
                                            std::vector<Eigen::MatrixXd>* jacobians) const {
+  // Written into the caller's residual and Jacobians, and fixed-size temporaries: a caller that
+  // keeps them across updates (the EKF) allocates nothing here.
   OdometerCalibration c;
   c.s_v = params[4][0];
   // A speed-only odometer's heading came from the gyro, divided by 1 + s_w at the interval's
@@ -81,35 +85,49 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
                                                      Eigen::Quaterniond(quatAt(params[3]) * R_j), c)
                                     : pre_->evaluate(vec3At(params[0]), quatAt(params[1]),
                                                      vec3At(params[2]), quatAt(params[3]), c);
-  const Eigen::MatrixXd W = whitenerAt(c.s_v, c.s_w);
+  const Whitener W = whitenerAt(c.s_v, c.s_w);
   const int n = rows_;
-  const Eigen::VectorXd rr = r.r.head(n);
-  residual = W * rr;
-  if (jacobians) {
-    *jacobians = {W * r.J_p_i.topRows(n),   W * r.J_q_i.topRows(n),  W * r.J_p_j.topRows(n),
-                  W * r.J_q_j.topRows(n),   W * r.J_s_v.topRows(n),  W * r.J_s_w.topRows(n),
-                  W * r.J_p_b_m.topRows(n), W * r.J_q_b_m.topRows(n)};
-    if (rates_) {
-      // q Exp(d) Exp(-a) = q Exp(-a) Exp(Exp(a) d): the shifted pose's Jacobian times Exp(a).
-      (*jacobians)[1] = W * (r.J_q_i * R_i.transpose()).topRows(n);
-      (*jacobians)[3] = W * (r.J_q_j * R_j.transpose()).topRows(n);
-      const Eigen::MatrixXd J_t_d = -(r.J_p_i * rates.v_n_i + r.J_q_i * rates.w_b_i +
-                                      r.J_p_j * rates.v_n_j + r.J_q_j * rates.w_b_j);
-      jacobians->push_back(W * J_t_d.topRows(n));
-    }
-    if (!informsLeverArm(quatAt(params[1]), quatAt(params[3]), c.q_b_m)) {
-      (*jacobians)[6].setZero();
-    }
-    // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
-    const double h = 1e-6;
-    (*jacobians)[4] += (whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w)) * rr / (2 * h);
-    if (n == 6) {
-      (*jacobians)[5] +=
-          (whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h)) * rr / (2 * h);
-    } else {
-      (*jacobians)[5].setZero();  // evaluated at the interval's s_w, whatever the block holds
-    }
+  const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1> rr = r.r.head(n);
+  residual.resize(n);
+  residual.noalias() = W * rr;
+  if (!jacobians) return;
+  std::vector<Eigen::MatrixXd>& J = *jacobians;
+  J.resize(rates_ ? 9 : 8);
+  const auto whiten = [&](Eigen::MatrixXd& out, const auto& rows) {
+    out.resize(n, rows.cols());
+    out.noalias() = W * rows.topRows(n);
+  };
+  whiten(J[0], r.J_p_i);
+  whiten(J[1], r.J_q_i);
+  whiten(J[2], r.J_p_j);
+  whiten(J[3], r.J_q_j);
+  whiten(J[4], r.J_s_v);
+  whiten(J[5], r.J_s_w);
+  whiten(J[6], r.J_p_b_m);
+  whiten(J[7], r.J_q_b_m);
+  if (rates_) {
+    // q Exp(d) Exp(-a) = q Exp(-a) Exp(Exp(a) d): the shifted pose's Jacobian times Exp(a).
+    whiten(J[1], Eigen::Matrix<double, 6, 3>(r.J_q_i * R_i.transpose()));
+    whiten(J[3], Eigen::Matrix<double, 6, 3>(r.J_q_j * R_j.transpose()));
+    const Eigen::Matrix<double, 6, 1> J_t_d = -(r.J_p_i * rates.v_n_i + r.J_q_i * rates.w_b_i +
+                                                r.J_p_j * rates.v_n_j + r.J_q_j * rates.w_b_j);
+    whiten(J[8], J_t_d);
   }
+  if (!informsLeverArm(quatAt(params[1]), quatAt(params[3]), c.q_b_m)) J[6].setZero();
+  // The whitening's own dependence on the scales (central differences: W is smooth and cheap).
+  const double h = 1e-6;
+  const Whitener dW_v = whitenerAt(c.s_v + h, c.s_w) - whitenerAt(c.s_v - h, c.s_w);
+  J[4].noalias() += dW_v * rr / (2 * h);
+  if (n == 6) {
+    const Whitener dW_w = whitenerAt(c.s_v, c.s_w + h) - whitenerAt(c.s_v, c.s_w - h);
+    J[5].noalias() += dW_w * rr / (2 * h);
+  } else {
+    J[5].setZero();  // evaluated at the interval's s_w, whatever the block holds
+  }
+}
+
+void OdometerPreintegrationModel::covarianceInto(Eigen::MatrixXd& R) const {
+  R.setIdentity(rows_, rows_);
 }
 
 }  // namespace giocal

@@ -61,6 +61,7 @@ class OdometerPreintegrationModel : public MeasurementModel {
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
                 std::vector<Eigen::MatrixXd>* jacobians) const override;
   Eigen::MatrixXd covariance() const override { return Eigen::MatrixXd::Identity(rows_, rows_); }
+  void covarianceInto(Eigen::MatrixXd& R) const override;
 
  private:
   /// Whether the states' turn between the interval's ends is beyond models.lever_arm_min_turn of
@@ -70,8 +71,9 @@ class OdometerPreintegrationModel : public MeasurementModel {
   /// density keeps the exact Jacobian.
   bool informsLeverArm(const Eigen::Quaterniond& q_i, const Eigen::Quaterniond& q_j,
                        const Eigen::Quaterniond& q_b_m) const;
-  /// W with W^T W = covariance^-1 (of the rows in use) at these scales.
-  Eigen::MatrixXd whitenerAt(double s_v, double s_w) const;
+  /// W with W^T W = covariance^-1 (of the rows in use) at these scales; on the stack.
+  using Whitener = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+  Whitener whitenerAt(double s_v, double s_w) const;
   std::shared_ptr<const OdometerPreintegration> pre_;
   int rows_;
   std::optional<PoseRates> rates_;

@@ -22,7 +22,9 @@ void PlanarMotionProjection::project(const double* const* params,
                                      std::vector<Eigen::MatrixXd>& J) const {
   const Eigen::Vector3d u = quatAt(params[q_block_]) * Eigen::Vector3d::UnitZ();
   Eigen::MatrixXd& J_p = J[static_cast<size_t>(p_block_)];
-  J_p = J_p * (Eigen::Matrix3d::Identity() - u * u.transpose());
+  const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - u * u.transpose();
+  // Row by row through a fixed-size temporary: the whole product would be a heap temporary.
+  for (Eigen::Index r = 0; r < J_p.rows(); ++r) J_p.row(r) = Eigen::RowVector3d(J_p.row(r) * P);
 }
 
 }  // namespace giocal

@@ -24,6 +24,7 @@ class ProjectedModel : public MeasurementModel {
     if (jacobians) project(params, *jacobians);
   }
   Eigen::MatrixXd covariance() const override { return inner_->covariance(); }
+  void covarianceInto(Eigen::MatrixXd& R) const override { inner_->covarianceInto(R); }
   const MeasurementModel& innerModel() const { return *inner_; }
 
  protected:

@@ -1,0 +1,96 @@
+// CalibrationFilter's gated Kalman updates: a model linearized at the current state into rows
+// kept from one update to the next, the iterated update, and the held (consider) states.
+#include <array>
+#include <cmath>
+
+#include "common/calibration/weak_directions.h"
+#include "common/math/kalman_update.h"
+#include "ekf/calibration_filter.h"
+
+namespace giocal {
+
+const std::vector<int>& CalibrationFilter::heldIndices() {
+  const std::array<int, 8> idx = calibrationIndices(s_);
+  held_.clear();
+  if (options_.hold_calibration) {
+    held_.assign(idx.begin(), idx.end());
+    if (s_.has(state::kTdOdo)) held_.push_back(s_.offset(state::kTdOdo));
+    if (s_.has(state::kGyroTilt)) {
+      for (int k = 0; k < 2; ++k) held_.push_back(s_.offset(state::kGyroTilt) + k);
+    }
+    return held_;
+  }
+  // States the run keeps at the prior (the vertical lever arm in planar motion, a speed-only
+  // odometer's s_w).
+  for (int k : held_states_) held_.push_back(idx[static_cast<size_t>(k)]);
+  return held_;
+}
+
+MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
+                                        const std::vector<StateKey>& keys,
+                                        double gyro_variance) const {
+  MeasurementRows rows = linearize(model, s_.bind(keys), s_.dim());
+  if (gyro_variance > 0.0) {
+    const Eigen::MatrixXd H_bg = rows.H.middleCols(s_.offset(state::kBg), 3);
+    rows.R += gyro_variance * H_bg * H_bg.transpose();
+  }
+  return rows;
+}
+
+void CalibrationFilter::linearizeRows(const MeasurementModel& model,
+                                      const std::vector<StateKey>& keys, double gyro_variance) {
+  s_.bind(keys, bindings_);
+  linearize(model, bindings_, s_.dim(), lin_, scratch_);
+  if (gyro_variance > 0.0 && lin_.H.rows() <= 6) {
+    // A vehicle-motion model's few rows: the same product off the heap.
+    using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 6, 3>;
+    const Rows3 H_bg = lin_.H.middleCols(s_.offset(state::kBg), 3);
+    lin_.R += gyro_variance * H_bg * H_bg.transpose();
+  } else if (gyro_variance > 0.0) {
+    const Eigen::MatrixXd H_bg = lin_.H.middleCols(s_.offset(state::kBg), 3);
+    lin_.R += gyro_variance * H_bg * H_bg.transpose();
+  }
+}
+
+UpdateResult CalibrationFilter::update(const MeasurementModel& model,
+                                       const std::vector<StateKey>& keys, double chi2_gate,
+                                       double gyro_variance, int iterations) {
+  if (iterations <= 1) {
+    linearizeRows(model, keys, gyro_variance);
+    return updateLinearized(lin_, chi2_gate);
+  }
+  // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
+  // state, keep the prior covariance; the last iteration's gain updates the covariance.
+  // Assigned, not constructed: the copy reuses the storage of the last update's (a registry
+  // constructed here allocated once per variable, about 55 times per odometer interval).
+  iterate_prior_ = s_;
+  const StateRegistry& prior = iterate_prior_;
+  UpdateResult r;
+  for (int it = 0; it < iterations; ++it) {
+    linearizeRows(model, keys, gyro_variance);
+    MeasurementRows& lin = lin_;
+    delta_ = s_.minus(prior);
+    h_delta_.noalias() = lin.H * delta_;
+    lin.residual -= h_delta_;  // residual linearized about the prior: r(x_i) - H d_i
+    // Values and covariance back to the prior's, then updated in place (whole-registry copies
+    // per iteration cost more than the update itself).
+    s_.setValues(prior);
+    s_.covariance() = prior.covariance();
+    r = kalmanUpdate(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
+                     &workspace_);
+    numerical_failures_ += r.numerical_failure;
+    if (!r.accepted) return r;  // s_ holds the prior again
+    s_.correct(r.dx);
+    if (r.dx.size() && (r.dx - delta_).norm() < 1e-9) break;
+  }
+  return r;
+}
+
+UpdateResult CalibrationFilter::updateLinearized(const MeasurementRows& rows, double chi2_gate) {
+  const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
+  numerical_failures_ += r.numerical_failure;
+  if (r.accepted) s_.correct(r.dx);
+  return r;
+}
+
+}  // namespace giocal
