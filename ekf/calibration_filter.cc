@@ -156,8 +156,8 @@ void CalibrationFilter::feedMotion(double t) {
 const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
   if (!pending_) {
     const NavState x = navState(s_);
-    pending_ = std::make_unique<ImuPreintegration>(dataset_.imu_noise, frame_.gravity_n(x.p_n_b),
-                                                   frame_.omega_ie_n(), x.b_a, x.b_g, gyroTilt(s_));
+    pending_.emplace(dataset_.imu_noise, frame_.gravity_n(x.p_n_b), frame_.omega_ie_n(), x.b_a,
+                     x.b_g, gyroTilt(s_));
     pending_t_ = t_;
   }
   if (t > pending_t_) {
@@ -180,7 +180,7 @@ double CalibrationFilter::propagateTo(double t) {
     t_prev = it->t;
   }
   gap = std::max(gap, t - t_prev);
-  propagateImu(s_, pre);
+  propagateImu(s_, pre, propagation_);
   pending_.reset();
   const double dt = t - t_;
   const double q = options_.hold_calibration ? 0.0 : dataset_.odom_noise.scale_random_walk;

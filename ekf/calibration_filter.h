@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "common/motion/motion_detector.h"
 #include "common/odometer/odom_sample.h"
 #include "common/odometer/odometer_preintegration.h"
+#include "ekf/imu_propagation.h"
 #include "ekf/state_registry.h"
 
 namespace giocal {
@@ -147,7 +149,7 @@ class CalibrationFilter {
   MotionDetector motion_;
   double t_ = 0.0;
   double motion_fed_t_ = 0.0;
-  std::unique_ptr<ImuPreintegration> pending_;
+  std::optional<ImuPreintegration> pending_;  // in place: one per propagation, not allocated
   double pending_t_ = 0.0;
   std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
   OdomSample last_odo_;
@@ -164,6 +166,7 @@ class CalibrationFilter {
   LinearizeScratch scratch_;
   MeasurementRows lin_;
   Eigen::VectorXd delta_, h_delta_;
+  PropagationScratch propagation_;
 };
 
 }  // namespace giocal

@@ -32,6 +32,11 @@ std::optional<GyroTilt> gyroTilt(const StateRegistry& s) {
 }
 
 void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
+  PropagationScratch scratch;
+  propagateImu(s, pre, scratch);
+}
+
+void propagateImu(StateRegistry& s, const ImuPreintegration& pre, PropagationScratch& scratch) {
   const NavState xi = navState(s);
   const std::optional<GyroTilt> tilt = gyroTilt(s);
   const NavState xj = pre.predict(xi, tilt);
@@ -52,7 +57,8 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
     for (int k = 0; k < 3; ++k) idx[static_cast<size_t>(used++)] = s.offset(key) + k;
   }
   const int m = tilt ? 17 : 15;
-  Eigen::MatrixXd G(15, m);
+  Eigen::MatrixXd& G = scratch.G;
+  G.resize(15, m);
   G.leftCols<15>() = -Jj_inv * Ji;
   if (tilt) {
     G.rightCols<2>() = -Jj_inv * r.J_tilt;
@@ -60,10 +66,14 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre) {
   }
   Eigen::MatrixXd& P = s.covariance();
   const int n = s.dim();
-  Eigen::MatrixXd Pn(m, n);  // the rows of P that G reads
+  Eigen::MatrixXd& Pn = scratch.Pn;  // the rows of P that G reads
+  Pn.resize(m, n);
   for (int a = 0; a < m; ++a) Pn.row(a) = P.row(idx[static_cast<size_t>(a)]);
-  const Eigen::MatrixXd FPn = G * Pn;  // new navigation rows against the old state
-  Eigen::MatrixXd FPnn(15, m);
+  Eigen::MatrixXd& FPn = scratch.FPn;  // new navigation rows against the old state
+  FPn.resize(15, n);
+  FPn.noalias() = G * Pn;
+  Eigen::MatrixXd& FPnn = scratch.FPnn;
+  FPnn.resize(15, m);
   for (int b = 0; b < m; ++b) FPnn.col(b) = FPn.col(idx[static_cast<size_t>(b)]);
   const Eigen::Matrix<double, 15, 15> Pnn_new = FPnn * G.transpose() + Q;
   for (int a = 0; a < 15; ++a) {

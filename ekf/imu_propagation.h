@@ -15,8 +15,15 @@ void setNavState(StateRegistry& s, const NavState& x);
 /// The gyro triad's tilt where the state estimates it, else none.
 std::optional<GyroTilt> gyroTilt(const StateRegistry& s);
 
+/// The propagation's dynamic temporaries, kept by a caller between propagations (no allocation
+/// while the state's size stays).
+struct PropagationScratch {
+  Eigen::MatrixXd G, Pn, FPn, FPnn;
+};
+
 /// Moves the navigation variables to the end of `pre`'s interval and propagates the covariance of
 /// the whole state (other variables keep their values and their cross-covariances are carried).
 void propagateImu(StateRegistry& s, const ImuPreintegration& pre);
+void propagateImu(StateRegistry& s, const ImuPreintegration& pre, PropagationScratch& scratch);
 
 }  // namespace giocal
