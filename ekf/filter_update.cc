@@ -87,7 +87,8 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
 }
 
 UpdateResult CalibrationFilter::updateLinearized(const MeasurementRows& rows, double chi2_gate) {
-  const UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
+  // Not const: returned by move, not copied.
+  UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
   numerical_failures_ += r.numerical_failure;
   if (r.accepted) s_.correct(r.dx);
   return r;

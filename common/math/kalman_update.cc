@@ -18,7 +18,7 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   KalmanWorkspace& ws = workspace ? *workspace : local;
   const Eigen::Index n = P.rows(), m = rows.H.rows();
   // H's zeros skipped: GNSS and odometer rows touch a few blocks of a long state.
-  const Eigen::SparseMatrix<double> H = rows.H.sparseView();
+  const Eigen::SparseMatrix<double>& H = ws.sparse(rows.H);
   Eigen::Map<Eigen::MatrixXd> PHt = ws.matrix(KalmanWorkspace::kPHt, n, m);
   PHt.noalias() = P * H.transpose();
   // W = H P first: S = W H^T then runs over W's contiguous columns (twice as fast as H (P H^T)

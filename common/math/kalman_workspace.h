@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -22,9 +23,27 @@ class KalmanWorkspace {
     if (b.size() < size) b.resize(size);
     return {b.data(), rows, cols};
   }
+  /// `dense` without its exact zeros, as dense.sparseView() gives it, in storage kept from the
+  /// last call (reallocated only when the column count or the nonzeros grow).
+  const Eigen::SparseMatrix<double>& sparse(const Eigen::MatrixXd& dense) {
+    sparse_.resize(dense.rows(), dense.cols());
+    Eigen::Index nonzeros = 0;
+    for (Eigen::Index j = 0; j < dense.cols(); ++j)
+      for (Eigen::Index i = 0; i < dense.rows(); ++i) nonzeros += dense(i, j) != 0.0;
+    sparse_.reserve(nonzeros);
+    for (Eigen::Index j = 0; j < dense.cols(); ++j) {
+      sparse_.startVec(j);
+      for (Eigen::Index i = 0; i < dense.rows(); ++i) {
+        if (dense(i, j) != 0.0) sparse_.insertBack(i, j) = dense(i, j);
+      }
+    }
+    sparse_.finalize();
+    return sparse_;
+  }
 
  private:
   std::array<std::vector<double>, kSlots> buffers_;
+  Eigen::SparseMatrix<double> sparse_;
 };
 
 }  // namespace giocal
