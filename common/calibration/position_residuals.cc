@@ -50,14 +50,13 @@ void PositionResidualCheck::addResidual(double t, double z_e, double z_n) {
   const Eigen::Vector2d z(z_e, z_n);
   // A break in the fixes (ten spacings, or a second when the spacing is not known yet) starts
   // the lags again: products across it would not be at their lag.
-  if (n_ > 0 && spacing_.size() < 64) spacing_.push_back(t - last_t_);
-  double spacing = 1.0;
-  if (!spacing_.empty()) {
-    std::vector<double> s = spacing_;
+  if (n_ > 0 && spacing_.size() < kSpacingSample) {
+    spacing_.push_back(t - last_t_);
+    std::vector<double> s = spacing_;  // the median of the first spacings, then kept
     std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-    spacing = s[s.size() / 2];
+    spacing_median_ = s[s.size() / 2];
   }
-  if (n_ > 0 && t - last_t_ > 10.0 * spacing) run_ = 0;
+  if (n_ > 0 && t - last_t_ > 10.0 * spacing_median_) run_ = 0;
   ring_[static_cast<size_t>(run_ % (kLags + 1))] = z;
   for (long k = 0; k <= std::min<long>(run_, kLags); ++k) {
     const Eigen::Vector2d& a = ring_[static_cast<size_t>((run_ - k) % (kLags + 1))];
@@ -78,9 +77,7 @@ PositionResiduals PositionResidualCheck::result() const {
   PositionResiduals r;
   r.fixes = n_;
   if (n_ < 2) return r;
-  std::vector<double> s = spacing_;
-  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-  r.interval_s = s.empty() ? 0.0 : s[s.size() / 2];
+  r.interval_s = spacing_median_;
   // Robust RMS: the median |z| over that of a unit normal (0.6745).
   const long half = (2 * n_ + 1) / 2;
   long seen = 0;

@@ -49,7 +49,9 @@ class PositionResidualCheck {
   std::array<Eigen::Vector2d, kLags + 1> ring_{};
   long n_ = 0, run_ = 0;  // residuals in all, and since the last break in the fixes
   double last_t_ = 0.0;
-  std::vector<double> spacing_;  // a sample of the fixes' spacing (the first ones)
+  static constexpr size_t kSpacingSample = 64;
+  std::vector<double> spacing_;  // the first kSpacingSample spacings of the fixes
+  double spacing_median_ = 1.0;  // their median [s] (1 s until known)
   std::array<double, kLags + 1> sum_products_{};
   std::array<long, kLags + 1> pairs_{};
   Eigen::Vector2d sum_ = Eigen::Vector2d::Zero();
