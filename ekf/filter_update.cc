@@ -26,14 +26,30 @@ const std::vector<int>& CalibrationFilter::heldIndices() {
   return held_;
 }
 
+namespace {
+
+/// A raw gyro sample's white noise, which reaches the residual through H's b_g columns:
+/// R += variance H_bg H_bg^T.
+void addGyroNoise(MeasurementRows& rows, int bg, double variance) {
+  if (!(variance > 0.0)) return;
+  if (rows.H.rows() <= 6) {
+    // A vehicle-motion model's few rows: the same product off the heap.
+    using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 6, 3>;
+    const Rows3 H_bg = rows.H.middleCols(bg, 3);
+    rows.R += variance * H_bg * H_bg.transpose();
+  } else {
+    const Eigen::MatrixXd H_bg = rows.H.middleCols(bg, 3);
+    rows.R += variance * H_bg * H_bg.transpose();
+  }
+}
+
+}  // namespace
+
 MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
                                         const std::vector<StateKey>& keys,
                                         double gyro_variance) const {
   MeasurementRows rows = linearize(model, s_.bind(keys), s_.dim());
-  if (gyro_variance > 0.0) {
-    const Eigen::MatrixXd H_bg = rows.H.middleCols(s_.offset(state::kBg), 3);
-    rows.R += gyro_variance * H_bg * H_bg.transpose();
-  }
+  addGyroNoise(rows, s_.offset(state::kBg), gyro_variance);
   return rows;
 }
 
@@ -41,15 +57,7 @@ void CalibrationFilter::linearizeRows(const MeasurementModel& model,
                                       const std::vector<StateKey>& keys, double gyro_variance) {
   s_.bind(keys, bindings_);
   linearize(model, bindings_, s_.dim(), lin_, scratch_);
-  if (gyro_variance > 0.0 && lin_.H.rows() <= 6) {
-    // A vehicle-motion model's few rows: the same product off the heap.
-    using Rows3 = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, 6, 3>;
-    const Rows3 H_bg = lin_.H.middleCols(s_.offset(state::kBg), 3);
-    lin_.R += gyro_variance * H_bg * H_bg.transpose();
-  } else if (gyro_variance > 0.0) {
-    const Eigen::MatrixXd H_bg = lin_.H.middleCols(s_.offset(state::kBg), 3);
-    lin_.R += gyro_variance * H_bg * H_bg.transpose();
-  }
+  addGyroNoise(lin_, s_.offset(state::kBg), gyro_variance);
 }
 
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,

@@ -20,7 +20,6 @@ void NhcModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
   // Rows x (lateral) and z (vertical) of the vehicle velocity.
   Eigen::Matrix<double, 2, 3> S;
   S << 1, 0, 0, 0, 0, 1;
-  residual.resize(2);
   residual = S * vv.v_m;
   if (jacobians) {
     // Into the caller's matrices: no allocation when it hands back the same ones.
@@ -28,19 +27,17 @@ void NhcModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
     J.resize(5);
     const Eigen::Matrix3d* d[5] = {&vv.dv_dv_n, &vv.dv_dq_n_b, &vv.dv_dbg, &vv.dv_dp_b_m,
                                    &vv.dv_dq_b_m};
-    for (size_t k = 0; k < 5; ++k) {
-      J[k].resize(2, 3);
-      J[k] = S * *d[k];
-    }
+    for (size_t k = 0; k < 5; ++k) J[k] = S * *d[k];
   }
 }
 
 Eigen::MatrixXd NhcModel::covariance() const {
-  return Eigen::Matrix2d::Identity() * sigma_ * sigma_;
+  Eigen::MatrixXd R;
+  covarianceInto(R);
+  return R;
 }
 
 void NhcModel::covarianceInto(Eigen::MatrixXd& R) const {
-  R.resize(2, 2);
   R = Eigen::Matrix2d::Identity() * sigma_ * sigma_;
 }
 

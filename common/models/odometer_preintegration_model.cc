@@ -88,13 +88,11 @@ void OdometerPreintegrationModel::evaluate(const double* const* params, Eigen::V
   const Whitener W = whitenerAt(c.s_v, c.s_w);
   const int n = rows_;
   const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1> rr = r.r.head(n);
-  residual.resize(n);
   residual.noalias() = W * rr;
   if (!jacobians) return;
   std::vector<Eigen::MatrixXd>& J = *jacobians;
   J.resize(rates_ ? 9 : 8);
   const auto whiten = [&](Eigen::MatrixXd& out, const auto& rows) {
-    out.resize(n, rows.cols());
     out.noalias() = W * rows.topRows(n);
   };
   whiten(J[0], r.J_p_i);
