@@ -62,9 +62,9 @@ const char* kUsage =
     "[--overwrite]\n"
     "  giocal report    --run <dir | box.csv> [--data <dataset>] --out <dir> [--overwrite]\n"
     "  giocal observability --data <dir> [--calibration truth|guess] [--pos <file.pos>]\n"
-    "                   [--window <s>] [--out <dir>]\n"
+    "                   [--gnss tc|single] [--window <s>] [--out <dir>]\n"
     "  giocal validate  --data <dir> --run <calibrate dir> [--outage <s>] [--windows <n>]\n"
-    "                   [--gnss tc|lc --pos <file.pos>] [--config <yaml>] --out <dir> "
+    "                   [--gnss tc|single|lc --pos <file.pos>] [--config <yaml>] --out <dir> "
     "[--overwrite]\n"
     "  giocal <command> --help     the command's options, their defaults and an example\n"
     "  giocal --version\n"
@@ -320,6 +320,9 @@ int runObservabilityCommand(int argc, char** argv) {
       "truth or guess: where the models are linearized (default: truth when the dataset has it)")(
       "pos", po::value<std::string>()->default_value(""),
       "an RTK solution of the drive, for a dataset without truth.csv")(
+      "gnss", po::value<std::string>()->default_value("tc"),
+      "tc: a rover and a base (fixed DD phase); single: one receiver, no base (time-differenced "
+      "phase, Doppler, single point positions; also when dataset.yaml names no base)")(
       "window", po::value<double>()->default_value(30.0), "analysis window [s]")(
       "position-sigma", po::value<double>()->default_value(0.0),
       "sigma per axis of the antenna positions made from truth.csv [m]; 0: each epoch's from "
@@ -336,6 +339,10 @@ int runObservabilityCommand(int argc, char** argv) {
   job.data = vm["data"].as<std::string>();
   job.calibration = vm["calibration"].as<std::string>();
   job.positions = vm["pos"].as<std::string>();
+  const std::string gnss = vm["gnss"].as<std::string>();
+  if (gnss != "tc" && gnss != "single")
+    throw po::error("--gnss must be tc or single, not '" + gnss + "'");
+  job.single = gnss == "single";
   job.window_s = vm["window"].as<double>();
   job.position_sigma_m = vm["position-sigma"].as<double>();
   job.config = vm["config"].as<std::string>();

@@ -43,6 +43,11 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
     throw std::runtime_error("--position-sigma must be 0 or more and --window positive");
   }
   const std::string json = job.out.empty() ? "" : job.out + "/observability.json";
+  if (job.single && !job.positions.empty()) {
+    throw std::runtime_error(
+        "--pos and --gnss single do not go together: one receiver's own "
+        "carrier phase gives the GNSS of the analysis");
+  }
   if (!json.empty() && std::filesystem::exists(json) && !job.overwrite) {
     throw std::runtime_error(json + " exists; give --overwrite to replace it");
   }
@@ -52,15 +57,22 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   std::unique_ptr<TempPosFile> own_rtk;
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   const DatasetDescription& d = data.description;
-  if (positions.empty() && d.truth.empty()) {
+  // One receiver: its own TDCP, Doppler and single point positions are the GNSS, no solution.
+  const bool single = job.single || (positions.empty() && d.roverAlone());
+  if (single && job.position_sigma_m > 0.0) {
+    throw std::runtime_error("--position-sigma makes antenna positions: not with one receiver");
+  }
+  if (positions.empty() && d.truth.empty() && !single) {
     requireRawGnss(d);
     own_rtk = std::make_unique<TempPosFile>("observability");
     positions = own_rtk->path;
     runRtk(datasetRtkJob(d, config, positions));
   }
   CalibrationInputs in = loadCalibrationInputs(data, positions);
+  if (single) addSingleReceiverTrack(in, config.calibration.single);
   ObservabilityJob oj;
   oj.options = config.calibration;
+  oj.options.single_receiver = single;
   oj.window_s = job.window_s;
   const std::string calibration =
       !job.calibration.empty() ? job.calibration : (in.truth ? "truth" : "guess");
@@ -73,9 +85,20 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   } else {
     throw std::runtime_error("--calibration must be truth or guess, not '" + calibration + "'");
   }
-  std::string reference = (own_rtk ? "giocal rtk's solution" : "--pos " + job.positions) +
+  std::string reference = (single    ? std::string("the rover alone")
+                           : own_rtk ? "giocal rtk's solution"
+                                     : "--pos " + job.positions) +
                           " (linearized at the filter's own estimate)";
-  if (positions.empty()) {
+  if (single) {
+    if (d.truth.empty()) {
+      log << "  dataset.yaml names no truth: the filter runs on its own estimate\n";
+    } else {
+      oj.reference = ReferenceTrajectory(readTruthCsv(in.description.pathOf(in.description.truth)));
+      reference =
+          "truth.csv, with one receiver's time-differenced carrier phase, Doppler and single "
+          "point positions";
+    }
+  } else if (positions.empty()) {
     oj.reference = ReferenceTrajectory(readTruthCsv(in.description.pathOf(in.description.truth)));
     const Eigen::Vector3d p_b_g = in.truth ? in.truth->p_b_g : in.description.p_b_g;
     if (job.position_sigma_m > 0.0) {

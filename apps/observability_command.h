@@ -1,5 +1,6 @@
 // `giocal observability --data <dir> [--calibration truth|guess] [--pos <file.pos>]
-// [--window <s>] [--position-sigma <m>] [--config <yaml>] [--out <dir>] [--overwrite]`.
+// [--gnss tc|single] [--window <s>] [--position-sigma <m>] [--config <yaml>] [--out <dir>]
+// [--overwrite]`.
 #pragma once
 
 #include <iosfwd>
@@ -12,6 +13,9 @@ struct ObservabilityCommandJob {
   double window_s = 30.0;
   double position_sigma_m = 0.0;  // > 0: this sigma per axis instead of the DD phase's geometry
   bool overwrite = false;
+  /// One receiver without a base (--gnss single, or a dataset that names no base observations):
+  /// the rover's own time-differenced phase, Doppler and single point positions.
+  bool single = false;
 };
 
 /// Analyzes what the dataset's drive can calibrate, prints it, and writes observability.json

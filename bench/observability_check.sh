@@ -4,7 +4,8 @@
 # replaced by a straight), per seed: the expected sigma of each parameter over the FGO's, the weak
 # states each names, and whether p_b_m.z is named unobservable. Counts the ratios within +-30 %
 # over all states and over the states neither tool names weak (the "observable parameter").
-# usage: bench/observability_check.sh [first_seed] [seeds]   (default 31 3; about 4 min)
+# usage: [NO_BASE=1] bench/observability_check.sh [first_seed] [seeds]   (default 31 3; about 4 min)
+# NO_BASE=1: rover-only drives (simulate --no-base), so both tools use one receiver (--gnss single).
 set -euo pipefail
 first=${1:-31}
 n=${2:-3}
@@ -22,7 +23,7 @@ for preset in paper field straight; do
   [ "$preset" = straight ] && config=$work/straight.yaml
   for ((s = first; s < first + n; s++)); do
     d=$work/$preset-$s
-    "$giocal" simulate --config "$config" --out "$d" --seed "$s" >/dev/null
+    "$giocal" simulate --config "$config" --out "$d" --seed "$s" ${NO_BASE:+--no-base} >/dev/null
     "$giocal" observability --data "$d" --out "$d/obs" >/dev/null
     "$giocal" calibrate --data "$d" --estimator fgo --out "$d/fgo" --quiet >/dev/null
     echo "$preset $s $d"

@@ -12,6 +12,7 @@
 #include "common/models/state_block.h"
 #include "ekf/calibration_filter.h"
 #include "ekf/imu_propagation.h"
+#include "ekf/single_receiver_update.h"
 #include "evaluation/ideal_imu.h"
 
 namespace giocal {
@@ -72,6 +73,8 @@ Pass runPass(const CalibrationInputs& in, const ObservabilityJob& job,
       in, options, description.initial_calibration, in.rover.epochs.front().t, &why);
   if (!init) throw std::runtime_error("observability: no initial state: " + why);
   CalibrationFilter filter(options, description, in.imu, *init);
+  const BroadcastOrbits orbits(in.nav);
+  SingleReceiverUpdate single(orbits, options);
   Pass pass;
   pass.t_first = in.rover.epochs.front().t;
   double next_end = pass.t_first + job.window_s;
@@ -88,6 +91,9 @@ Pass runPass(const CalibrationInputs& in, const ObservabilityJob& job,
     if (t_odo <= t_gnss) {
       if (t_odo > filter.time()) filter.updateOdometer(in.odom[k]);
       ++k;
+    } else if (options.single_receiver) {
+      if (t_gnss >= filter.time()) single.process(filter, in.rover.epochs[j]);
+      ++j;
     } else {
       const PositionFix* fix = fixAt(in.positions, t_gnss, kPositionTolerance);
       if (fix && t_gnss >= filter.time()) filter.updatePosition(*fix);
@@ -235,7 +241,7 @@ ObservabilityReport analyzeObservability(const CalibrationInputs& in, const Obse
   if (in.rover.epochs.empty()) throw std::runtime_error("observability: no GNSS epochs");
   if (!(job.window_s > 0.0)) throw std::runtime_error("observability: the window must be > 0 s");
   CalibrationOptions options = job.options;
-  options.loosely_coupled = true;
+  options.loosely_coupled = !options.single_receiver;  // else the positions of in.positions
   options.hold_calibration = false;
   // Along a reference, the IMU is the reference's own motion: the recorded samples' noise in the
   // propagation's Jacobians makes the near-unobservable heading split look observable (paper

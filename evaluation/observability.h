@@ -1,8 +1,10 @@
 // Observability analysis: what a drive can calibrate, before calibrating. The EKF's covariance
 // recursion is run along the drive's reference motion (truth.csv, linearized there, or a GNSS
-// position solution), with the IMU and odometer logs and antenna positions as GNSS: the expected
-// sigma of each calibration state per time window and in total, the weakly observed states, the
-// couplings between them and with the IMU heading, and advice on the motion that would help.
+// position solution), with the IMU and odometer logs and antenna positions as GNSS (with one
+// receiver, options.single_receiver, its own TDCP, Doppler and single point positions): the
+// expected sigma of each calibration state per time window and in total, the weakly observed
+// states, the couplings between them and with the IMU heading, and advice on the motion that would
+// help.
 #pragma once
 
 #include <Eigen/Core>

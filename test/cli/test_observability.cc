@@ -1,7 +1,8 @@
 // `giocal observability`: on the flat paper preset p_b_m.z is named unobservable and the
 // extrinsic yaw weak, the rest informed; on a straight drive (no turns) the yaw-rate scale, the
 // lateral lever arm, pitch and yaw are named weak, with the advice to turn; and the numbers in the
-// printed table are those of observability.json.
+// printed table are those of observability.json. With one receiver (a rover-only drive) the
+// analysis uses the rover's own phase and agrees with the factor graph's sigmas.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -78,6 +79,45 @@ TEST(Observability, StraightDriveNamesWhatOnlyTurnsInform) {
   }
   EXPECT_FALSE(names(j["weak"], "s_v")) << log;
   EXPECT_NE(log.find("advice: s_w: turning"), std::string::npos) << log;
+}
+
+TEST(Observability, WithOneReceiverItsExpectedSigmasAreTheFactorGraphs) {
+  test::TempDir dir;
+  const std::string data = dir.file("data");
+  run("simulate --config " + std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml --out " +
+      data + " --seed 12 --no-base");
+  // No base in dataset.yaml: one receiver without being asked, as calibrate does.
+  const std::string log = run("observability --data " + data + " --out " + dir.file("obs"));
+  EXPECT_NE(log.find("one receiver's time-differenced carrier phase"), std::string::npos) << log;
+  run("calibrate --data " + data + " --estimator fgo --no-validate --quiet --out " +
+      dir.file("fgo"));
+  std::ifstream obs_file(dir.file("obs/observability.json")),
+      fgo_file(dir.file("fgo/summary.json"));
+  ASSERT_TRUE(obs_file.good() && fgo_file.good()) << log;
+  const nlohmann::json obs = nlohmann::json::parse(obs_file), fgo = nlohmann::json::parse(fgo_file);
+  const nlohmann::json& sd = fgo["sd"];
+  const std::vector<std::pair<std::string, double>> fgo_sigma = {
+      {"s_v", sd["s_v"].get<double>()},
+      {"s_w", sd["s_w"].get<double>()},
+      {"p_b_m.x", sd["p_b_m"][0].get<double>()},
+      {"p_b_m.y", sd["p_b_m"][1].get<double>()},
+      {"roll of q_b_m", sd["rpy_b_m_deg"][0].get<double>()},
+      {"pitch of q_b_m", sd["rpy_b_m_deg"][1].get<double>()}};
+  for (const auto& [name, sigma] : fgo_sigma) {
+    const double expected = obs["expected_sigma"][name].get<double>();
+    EXPECT_NEAR(expected / sigma, 1.0, 0.3) << name << "\n" << log;
+    EXPECT_LT(expected, 0.2 * obs["prior_sigma"][name].get<double>()) << name;
+  }
+  // The one weak state of this drive, for both.
+  EXPECT_TRUE(names(obs["weak"], "yaw of q_b_m")) << log;
+  EXPECT_NE(fgo["warnings"].dump().find("yaw of q_b_m is weakly observed"), std::string::npos);
+  EXPECT_FALSE(obs["p_b_m_z"]["observable"].get<bool>()) << log;
+  // One receiver has no position solution to hand the analysis.
+  const test::GiocalResult refused =
+      test::runGiocal("observability --data " + data + " --gnss single --pos x.pos");
+  EXPECT_NE(refused.code, 0);
+  EXPECT_NE(refused.out.find("--pos and --gnss single do not go together"), std::string::npos)
+      << refused.out;
 }
 
 TEST(Observability, WithoutTruthItRunsOnGiocalRtksSolutionAndSaysWhatItCannotAssess) {
