@@ -1,6 +1,5 @@
 #include "ekf/imu_propagation.h"
 
-#include <Eigen/LU>
 #include <array>
 #include <optional>
 
@@ -42,10 +41,9 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre, PropagationScr
   const NavState xj = pre.predict(xi, tilt);
   const ImuResidual r = pre.evaluate(xi, xj, tilt);
   // Residual Jacobians in the variable order p, q, v, b_a, b_g.
-  Eigen::Matrix<double, 15, 15> Ji, Jj;
+  Eigen::Matrix<double, 15, 15> Ji;
   Ji << r.J_p_i, r.J_q_i, r.J_v_i, r.J_ba_i, r.J_bg_i;
-  Jj << r.J_p_j, r.J_q_j, r.J_v_j, r.J_ba_j, r.J_bg_j;
-  const Eigen::Matrix<double, 15, 15> Jj_inv = Jj.inverse();
+  const Eigen::Matrix<double, 15, 15> Jj_inv = endStateJacobianInverse(r);
   const Eigen::Matrix<double, 15, 15> Q = Jj_inv * pre.covariance() * Jj_inv.transpose();
 
   // Only the navigation rows of Phi differ from identity: P' = Phi P Phi^T touches the navigation

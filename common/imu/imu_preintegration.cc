@@ -328,4 +328,20 @@ ImuResidual ImuPreintegration::evaluate(const NavState& i, const NavState& j,
   return out;
 }
 
+Eigen::Matrix<double, 15, 15> endStateJacobianInverse(const ImuResidual& r) {
+  using namespace imu_index;
+  // J_j dx = dr row by row: dr_p = A dp, dr_theta = C dtheta, dr_v = B dp + D dv, and the biases
+  // one to one; so dp = A^-1 dr_p, dtheta = C^-1 dr_theta, dv = D^-1 (dr_v - B A^-1 dr_p).
+  const Mat3 A_inv = r.J_p_j.block<3, 3>(kP, 0).inverse();
+  const Mat3 D_inv = r.J_v_j.block<3, 3>(kV, 0).inverse();
+  Eigen::Matrix<double, 15, 15> inv = Eigen::Matrix<double, 15, 15>::Zero();
+  inv.block<3, 3>(kP, kP) = A_inv;
+  inv.block<3, 3>(kR, kR) = r.J_q_j.block<3, 3>(kR, 0).inverse();
+  inv.block<3, 3>(kV, kP) = -D_inv * r.J_p_j.block<3, 3>(kV, 0) * A_inv;
+  inv.block<3, 3>(kV, kV) = D_inv;
+  inv.block<3, 3>(kBa, kBa) = Mat3::Identity();
+  inv.block<3, 3>(kBg, kBg) = Mat3::Identity();
+  return inv;
+}
+
 }  // namespace giocal

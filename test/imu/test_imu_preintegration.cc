@@ -72,6 +72,29 @@ TEST(ImuPreintegration, AllJacobiansMatchNumericDifferentiation) {
   }
 }
 
+TEST(ImuPreintegration, EndStateJacobianInverseIsTheInverse) {
+  // The blockwise inverse relies on which residual rows state j moves; a new dependency in
+  // evaluate() breaks it, and this test.
+  std::mt19937 rng(12);
+  Fixture f;
+  for (int trial = 0; trial < 10; ++trial) {
+    ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), randomVec(rng, 0.05),
+                          randomVec(rng, 0.01));
+    for (int k = 0; k < 50; ++k)
+      pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
+    const ImuResidual res = pre.evaluate(randomState(rng), randomState(rng));
+    Eigen::Matrix<double, 15, 15> Jj;
+    Jj << res.J_p_j, res.J_q_j, res.J_v_j, res.J_ba_j, res.J_bg_j;
+    const Eigen::Matrix<double, 15, 15> inv = endStateJacobianInverse(res);
+    EXPECT_LT((inv * Jj - Eigen::Matrix<double, 15, 15>::Identity()).cwiseAbs().maxCoeff(), 1e-13)
+        << trial;
+    EXPECT_LT(test::relativeDifference(inv, Jj.inverse()), 1e-13) << trial;
+    // The Earth's rate couples v_j into r_v through p_j: the block that a diagonal form misses.
+    const Eigen::Matrix3d v_by_p = inv.block<3, 3>(imu_index::kV, imu_index::kP);
+    EXPECT_GT(v_by_p.norm(), 1e-6);
+  }
+}
+
 TEST(ImuPreintegration, ConstantRateAndAccelerationClosedForm) {
   // Body turning at w about z with a constant body-x specific force a, no gravity, no Earth
   // rotation: dv = a/w (sin wT, 1 - cos wT, 0), dp = a/w ((1 - cos wT)/w, T - sin(wT)/w, 0).
