@@ -69,7 +69,10 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre, PropagationScr
   for (int a = 0; a < m; ++a) Pn.row(a) = P.row(idx[static_cast<size_t>(a)]);
   Eigen::MatrixXd& FPn = scratch.FPn;  // new navigation rows against the old state
   FPn.resize(15, n);
-  FPn.noalias() = G * Pn;
+  // The biases are random walks: G's bias rows pick their own columns (ones and exact zeros),
+  // so their rows of F P are P's as they were; only the nine moving rows need the product.
+  FPn.topRows<9>().noalias() = G.topRows<9>() * Pn;
+  FPn.bottomRows<6>() = Pn.middleRows<6>(9);
   Eigen::MatrixXd& FPnn = scratch.FPnn;
   FPnn.resize(15, m);
   for (int b = 0; b < m; ++b) FPnn.col(b) = FPn.col(idx[static_cast<size_t>(b)]);

@@ -139,5 +139,41 @@ TEST(ImuPropagation, CarriesCrossCovarianceWithOtherVariables) {
   EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(P).eigenvalues().minCoeff(), -1e-15);
 }
 
+TEST(ImuPropagation, EqualsTheDenseTransitionOfTheWholeState) {
+  // propagateImu's shortcuts (the end-state Jacobian inverted by blocks, only the navigation rows
+  // moved, the bias rows copied) against Phi P Phi^T + Q written out densely, on a covariance
+  // where every variable is correlated with every other.
+  const ImuCase su;
+  StateRegistry s;
+  su.fill(s);
+  const int n = s.dim();
+  std::mt19937 rng(5);
+  std::normal_distribution<double> g(0.0, 1.0);
+  Eigen::MatrixXd L(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) L(i, j) = 1e-2 * g(rng);
+  s.covariance() = L * L.transpose() + 1e-6 * Eigen::MatrixXd::Identity(n, n);
+  const Eigen::MatrixXd P0 = s.covariance();
+  ImuPreintegration step(su.noise, su.frame.gravity_n(), su.frame.omega_ie_n(), su.x0.b_a,
+                         su.x0.b_g);
+  step.integrateSamples(su.samples, 0.0, 0.5);
+  const NavState xj = step.predict(su.x0);
+  const ImuResidual r = step.evaluate(su.x0, xj);
+  Eigen::Matrix<double, 15, 15> Ji, Jj;
+  Ji << r.J_p_i, r.J_q_i, r.J_v_i, r.J_ba_i, r.J_bg_i;
+  Jj << r.J_p_j, r.J_q_j, r.J_v_j, r.J_ba_j, r.J_bg_j;
+  const Eigen::Matrix<double, 15, 15> Jj_inv = Jj.inverse();
+  Eigen::MatrixXd Phi = Eigen::MatrixXd::Identity(n, n), Q = Eigen::MatrixXd::Zero(n, n);
+  const int nav = s.offset(state::kP);  // p, q, v, b_a, b_g follow one another
+  ASSERT_EQ(s.offset(state::kBg), nav + 12);
+  Phi.block(nav, nav, 15, 15) = -Jj_inv * Ji;
+  Q.block(nav, nav, 15, 15) = Jj_inv * step.covariance() * Jj_inv.transpose();
+  const Eigen::MatrixXd expected = Phi * P0 * Phi.transpose() + Q;
+  propagateImu(s, step);
+  EXPECT_LT((s.covariance() - expected).cwiseAbs().maxCoeff(),
+            1e-12 * expected.cwiseAbs().maxCoeff());
+  EXPECT_LT((s.value(state::kP) - xj.p_n_b).norm(), 1e-12);
+}
+
 }  // namespace
 }  // namespace giocal
