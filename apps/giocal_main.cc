@@ -339,10 +339,7 @@ int runObservabilityCommand(int argc, char** argv) {
   job.data = vm["data"].as<std::string>();
   job.calibration = vm["calibration"].as<std::string>();
   job.positions = vm["pos"].as<std::string>();
-  const std::string gnss = vm["gnss"].as<std::string>();
-  if (gnss != "tc" && gnss != "single")
-    throw po::error("--gnss must be tc or single, not '" + gnss + "'");
-  job.single = gnss == "single";
+  job.gnss = vm["gnss"].as<std::string>();
   job.window_s = vm["window"].as<double>();
   job.position_sigma_m = vm["position-sigma"].as<double>();
   job.config = vm["config"].as<std::string>();

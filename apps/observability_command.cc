@@ -43,7 +43,9 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
     throw std::runtime_error("--position-sigma must be 0 or more and --window positive");
   }
   const std::string json = job.out.empty() ? "" : job.out + "/observability.json";
-  if (job.single && !job.positions.empty()) {
+  if (job.gnss != "tc" && job.gnss != "single")
+    throw std::runtime_error("--gnss must be tc or single, not '" + job.gnss + "'");
+  if (job.gnss == "single" && !job.positions.empty()) {
     throw std::runtime_error(
         "--pos and --gnss single do not go together: one receiver's own "
         "carrier phase gives the GNSS of the analysis");
@@ -58,7 +60,7 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   const DatasetFolder data = openDatasetFolder(job.data);  // once for the whole run
   const DatasetDescription& d = data.description;
   // One receiver: its own TDCP, Doppler and single point positions are the GNSS, no solution.
-  const bool single = job.single || (positions.empty() && d.roverAlone());
+  const bool single = job.gnss == "single" || (positions.empty() && d.roverAlone());
   if (single && job.position_sigma_m > 0.0) {
     throw std::runtime_error("--position-sigma makes antenna positions: not with one receiver");
   }

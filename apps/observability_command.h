@@ -13,9 +13,9 @@ struct ObservabilityCommandJob {
   double window_s = 30.0;
   double position_sigma_m = 0.0;  // > 0: this sigma per axis instead of the DD phase's geometry
   bool overwrite = false;
-  /// One receiver without a base (--gnss single, or a dataset that names no base observations):
-  /// the rover's own time-differenced phase, Doppler and single point positions.
-  bool single = false;
+  /// tc, or single: one receiver without a base (also taken for a dataset that names no base
+  /// observations): the rover's own time-differenced phase, Doppler and single point positions.
+  std::string gnss = "tc";
 };
 
 /// Analyzes what the dataset's drive can calibrate, prints it, and writes observability.json

@@ -54,8 +54,8 @@ void runSimulate(const std::string& config, const std::string& out, std::uint64_
   log << "simulated '" << cfg.name << "' (seed " << seed
       << "): " << logs.truth.back().t - logs.truth.front().t << " s, " << logs.imu.size()
       << " IMU and " << logs.odom.size() << " odometer samples, " << logs.gnss.rover.size()
-      << " GNSS epochs" << (cfg.gnss.base ? "" : " (a rover alone)") << " in " << wall
-      << " s -> " << out << "\n";
+      << " GNSS epochs" << (cfg.gnss.base ? "" : " (a rover alone)") << " in " << wall << " s -> "
+      << out << "\n";
   if (!cfg.gnss.base) {
     log << "  rover alone: " << logs.gnss.slips << " slips (" << logs.gnss.half_cycles
         << " half cycles), " << logs.gnss.clock_steps << " receiver clock steps\n";

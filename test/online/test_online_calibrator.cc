@@ -356,9 +356,8 @@ TEST(OnlineCalibrator, LateOdometerStampsAreNamedWithTheOffsetToSet) {
 
 // With calibration.estimate_odometer_delay, both estimators estimate a 50 ms wheel delay of a field
 // drive (6 of its 10 laps) within 3 sigma, a sigma under 4 ms, and the run neither asks for a time
-// offset it has taken out nor finds the state at odds with the yaw rates; an on-time drive
-// estimates a delay indistinguishable from zero. A speed-only odometer (its yaw rate is the gyro's)
-// refuses the option. (The 5 ms of issue 21 on the whole preset: bench/odometer_delay.sh.)
+// offset it has taken out nor finds the state at odds with the yaw rates; an on-time drive's is
+// zero within its sigma. A speed-only odometer refuses the option (bench/odometer_delay.sh: 5 ms).
 TEST(OnlineCalibrator, TheOdometerDelayIsEstimatedByBothEstimators) {
   test::TempDir dir;
   sim::SimConfig cfg =
