@@ -150,9 +150,10 @@ void runObservability(const ObservabilityCommandJob& job, std::ostream& log) {
   log.unsetf(std::ios::fixed);
   log << std::setprecision(3) << "  state            prior       expected    (unit)\n";
   for (int k = 0; k < 8; ++k) {
-    if (k == 4) {
-      log << "  p_b_m.z          " << std::setw(10) << r.prior_sigma[4] << "  " << std::setw(10)
-          << r.p_b_m_z_sigma_free << "   m  "
+    if (k == r.vertical_state) {
+      log << "  " << std::left << std::setw(15) << calibrationStateName(k) << std::right << " "
+          << std::setw(10) << r.prior_sigma[k] << "  " << std::setw(10) << r.p_b_m_z_sigma_free
+          << "   m  "
           << (!r.p_b_m_z_assessed    ? "not assessed without truth.csv"
               : r.p_b_m_z_observable ? "observable"
                                      : "UNOBSERVABLE (planar motion)")

@@ -161,10 +161,11 @@ std::vector<std::string> adviceFor(const ObservabilityReport& r) {
       advice.push_back(std::string(calibrationStateName(k)) + ": " + motionThatInforms(k));
   }
   if (r.p_b_m_z_assessed && !r.p_b_m_z_observable) {
-    advice.push_back(
-        "p_b_m.z: unobservable on this drive (planar motion: the vehicle neither rolls nor "
-        "pitches enough); slopes and ramps would inform it, otherwise it stays at the guess "
-        "(calibration.hold_p_b_m_z)");
+    advice.push_back(std::string(calibrationStateName(r.vertical_state)) +
+                     " (along the vehicle's vertical): unobservable on this drive (planar "
+                     "motion: the vehicle neither rolls nor pitches enough); slopes and ramps "
+                     "would inform it, otherwise it stays at the guess "
+                     "(calibration.hold_p_b_m_z)");
   }
   const DriveMotion& m = r.total;
   const double turned = m.turned_left_deg + m.turned_right_deg;
@@ -265,6 +266,7 @@ ObservabilityReport analyzeObservability(const CalibrationInputs& in, const Obse
   p0.calib = prior.mean;
   p0.cov = priorCalibrationCovariance(prior);
   r.prior_sigma = p0.sigma();
+  r.vertical_state = verticalLeverState(prior);
   r.expected_sigma = pass.final.sigma();
   // Along the vehicle's vertical (m's z in b), the direction planar motion leaves unobservable.
   const Eigen::Vector3d up_b = job.linearize_at.q_b_m * Eigen::Vector3d::UnitZ();

@@ -48,6 +48,9 @@ struct ObservabilityWindow {
 struct ObservabilityReport {
   bool linearized_at_reference = false;
   Eigen::Matrix<double, 8, 1> prior_sigma, expected_sigma;  // calibration.csv order and units
+  /// The component of p_b_m (calibration.csv index) along the vehicle's vertical: the one
+  /// held in planar motion (p_b_m.z, unless the IMU is mounted on its side).
+  int vertical_state = 4;
   /// The expected sigma of p_b_m along the vehicle's vertical were it estimated [m].
   double p_b_m_z_sigma_free = 0.0;
   bool p_b_m_z_observable = false;
