@@ -106,6 +106,7 @@ struct Tallies {
 Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from, bool where) {
   Tallies t;
   size_t ko = 0, kr = 0, kb = 0;
+  Tally ignored;
   const auto counted = [&](Tally& own, double at, const auto& call) {
     const size_t pending = c.health().pending_epochs;  // health() allocates: outside the count
     const long long before = g_allocations.load();
@@ -117,11 +118,10 @@ Tallies feed(const CalibrationInputs& in, Calibrator& c, double steady_from, boo
     if (at < steady_from) return;
     const bool epoch = c.health().pending_epochs < pending;
     (epoch ? t.epoch : own).add(n);
-    if (epoch) return;
+    if (epoch || &own == &ignored) return;  // the stacks are the IMU's and odometer's
     for (int k = 0; k < g_recorded; ++k)
       ++t.stacks[std::vector<void*>(g_stacks[k] + 2, g_stacks[k] + g_depths[k])];
   };
-  Tally ignored;
   for (const ImuSample& s : in.imu) {
     while (ko < in.odom.size() && in.odom[ko].t <= s.t) {
       const OdomSample& o = in.odom[ko++];
@@ -147,7 +147,7 @@ void printStacks(const std::map<std::vector<void*>, long long>& stacks) {
   for (const auto& [stack, n] : stacks) order.push_back({n, &stack});
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (size_t k = 0; k < std::min<size_t>(order.size(), 8); ++k) {
+  for (size_t k = 0; k < std::min<size_t>(order.size(), 12); ++k) {
     std::printf("  %lld allocations from:\n", order[k].first);
     const std::vector<void*>& frames = *order[k].second;
     char** names = backtrace_symbols(frames.data(), static_cast<int>(frames.size()));
