@@ -31,16 +31,21 @@ NavState randomState(std::mt19937& rng) {
 struct Fixture {
   LocalFrame frame{ecefFromGeodetic({0.61, 2.39, 40.0})};
   ImuNoise noise;
+  /// Half a second of random rates and specific forces, from random linearization biases.
+  ImuPreintegration randomInterval(std::mt19937& rng) const {
+    ImuPreintegration pre(noise, frame.gravity_n(), frame.omega_ie_n(), randomVec(rng, 0.05),
+                          randomVec(rng, 0.01));
+    for (int k = 0; k < 50; ++k)
+      pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
+    return pre;
+  }
 };
 
 TEST(ImuPreintegration, AllJacobiansMatchNumericDifferentiation) {
   std::mt19937 rng(11);
   Fixture f;
   for (int trial = 0; trial < 10; ++trial) {
-    ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), randomVec(rng, 0.05),
-                          randomVec(rng, 0.01));
-    for (int k = 0; k < 50; ++k)
-      pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
+    const ImuPreintegration pre = f.randomInterval(rng);
     // States away from the linearization point, with biases that differ from it.
     const NavState si = randomState(rng), sj = randomState(rng);
     const ImuResidual res = pre.evaluate(si, sj);
@@ -78,11 +83,7 @@ TEST(ImuPreintegration, EndStateJacobianInverseIsTheInverse) {
   std::mt19937 rng(12);
   Fixture f;
   for (int trial = 0; trial < 10; ++trial) {
-    ImuPreintegration pre(f.noise, f.frame.gravity_n(), f.frame.omega_ie_n(), randomVec(rng, 0.05),
-                          randomVec(rng, 0.01));
-    for (int k = 0; k < 50; ++k)
-      pre.integrate(0.01, randomVec(rng, 1.0), randomVec(rng, 3.0) + Vec3(0, 0, 9.8));
-    const ImuResidual res = pre.evaluate(randomState(rng), randomState(rng));
+    const ImuResidual res = f.randomInterval(rng).evaluate(randomState(rng), randomState(rng));
     Eigen::Matrix<double, 15, 15> Jj;
     Jj << res.J_p_j, res.J_q_j, res.J_v_j, res.J_ba_j, res.J_bg_j;
     const Eigen::Matrix<double, 15, 15> inv = endStateJacobianInverse(res);
