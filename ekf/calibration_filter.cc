@@ -89,18 +89,36 @@ CalibrationFilter::CalibrationFilter(const CalibrationOptions& options,
 
 UpdateResult CalibrationFilter::updatePlanar(const MeasurementModel& model,
                                              const std::vector<StateKey>& keys, double chi2_gate,
-                                             double gyro_variance) {
-  if (!options_.hold_p_b_m_z) return update(model, keys, chi2_gate, gyro_variance);
+                                             double gyro_variance, int iterations) {
+  if (!options_.hold_p_b_m_z) return update(model, keys, chi2_gate, gyro_variance, iterations);
   // The projection borrows the model for this call (an empty owner: nothing allocated).
   const PlanarMotionProjection projected(
       std::shared_ptr<const MeasurementModel>(std::shared_ptr<void>(), &model));
-  return update(projected, keys, chi2_gate, gyro_variance);
+  return update(projected, keys, chi2_gate, gyro_variance, iterations);
 }
 
-std::shared_ptr<const MeasurementModel> CalibrationFilter::planar(
-    std::shared_ptr<const MeasurementModel> model) const {
-  if (!options_.hold_p_b_m_z) return model;
-  return std::make_shared<PlanarMotionProjection>(std::move(model));
+UpdateResult CalibrationFilter::updateInterval(double t) {
+  interval_keys_.assign(
+      {kOdoP, kOdoQ, state::kP, state::kQ, state::kSv, state::kSw, state::kPbm, state::kQbm});
+  std::optional<PoseRates> rates;  // with the odometer's delay as a state
+  if (options_.estimate_odometer_delay) {
+    odo_rates_.v_n_j = s_.value(state::kV);
+    odo_rates_.w_b_j =
+        poseRate(imu_, t, s_.value(state::kBg), dataset_.imu_noise.gyro_noise_density);
+    rates = odo_rates_;
+    interval_keys_.push_back(state::kTdOdo);
+  }
+  // The models borrow the preintegration and each other for this call (empty owners).
+  const OdometerPreintegrationModel model(
+      std::shared_ptr<const OdometerPreintegration>(std::shared_ptr<void>(), &*odo_pre_),
+      !dataset_.odom_noise.measures_yaw_rate, rates);
+  const double gate = chi2Quantile(options_.chi2_probability, model.residualSize());
+  if (interval_moved_) {
+    return updatePlanar(model, interval_keys_, gate, 0.0, options_.odometer_iterations);
+  }
+  const StandstillProjection standstill(
+      std::shared_ptr<const MeasurementModel>(std::shared_ptr<void>(), &model));
+  return updatePlanar(standstill, interval_keys_, gate, 0.0, options_.odometer_iterations);
 }
 
 void CalibrationFilter::reopenCalibration() {
@@ -193,15 +211,12 @@ double CalibrationFilter::propagateTo(double t) {
 }
 
 void CalibrationFilter::restartOdometerInterval(const OdomSample& sample) {
-  for (const StateKey& n : {kOdoP, kOdoQ}) {
-    if (s_.has(n)) s_.remove(n);
-  }
+  // Clones of the pose now; an interval's clones are overwritten where they stand.
   s_.clone(state::kP, kOdoP);
   s_.clone(state::kQ, kOdoQ);
-  odo_pre_ = std::make_unique<OdometerPreintegration>(
-      odometerPreintegrationNoise(dataset_.odom_noise, dataset_.imu_noise.gyro_noise_density,
-                                  options_.models),
-      s_.value(state::kSv)[0], s_.value(state::kSw)[0]);
+  odo_pre_.emplace(odometerPreintegrationNoise(
+                       dataset_.odom_noise, dataset_.imu_noise.gyro_noise_density, options_.models),
+                   s_.value(state::kSv)[0], s_.value(state::kSw)[0]);
   last_odo_ = sample;
   interval_moved_ = false;
   if (options_.estimate_odometer_delay) {
@@ -234,28 +249,11 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     }
     last_odo_ = sample;
     if (interval_done) {
-      std::vector<StateKey> keys{kOdoP,      kOdoQ,      state::kP,   state::kQ,
-                                 state::kSv, state::kSw, state::kPbm, state::kQbm};
-      std::optional<PoseRates> rates;  // with the odometer's delay as a state
-      if (options_.estimate_odometer_delay) {
-        odo_rates_.v_n_j = s_.value(state::kV);
-        odo_rates_.w_b_j =
-            poseRate(imu_, sample.t, s_.value(state::kBg), dataset_.imu_noise.gyro_noise_density);
-        rates = odo_rates_;
-        keys.push_back(state::kTdOdo);
-      }
-      std::shared_ptr<const MeasurementModel> model =
-          planar(std::make_shared<OdometerPreintegrationModel>(
-              std::shared_ptr<const OdometerPreintegration>(std::move(odo_pre_)),
-              !dataset_.odom_noise.measures_yaw_rate, rates));
-      if (!interval_moved_) model = std::make_shared<StandstillProjection>(model);
       step.interval = true;
       step.reopened = !options_.hold_calibration &&
                       odometer_rejected_in_row_ >= options_.max_odometer_rejections;
       if (step.reopened) reopenCalibration();
-      const UpdateResult r =
-          update(*model, keys, chi2Quantile(options_.chi2_probability, model->residualSize()), 0.0,
-                 options_.odometer_iterations);
+      const UpdateResult r = updateInterval(sample.t);
       step.rejected = !r.accepted && !r.numerical_failure;  // a failure is not the gate's
       odometer_rejected_in_row_ =
           step.rejected && !step.reopened ? odometer_rejected_in_row_ + 1 : 0;

@@ -22,6 +22,7 @@
 #include "common/odometer/odom_sample.h"
 #include "common/odometer/odometer_preintegration.h"
 #include "ekf/imu_propagation.h"
+#include "ekf/linearization_cache.h"
 #include "ekf/state_registry.h"
 
 namespace giocal {
@@ -72,7 +73,8 @@ class CalibrationFilter {
   /// consider states (p_b_m.z when held) are not corrected. Models that take a raw gyro sample
   /// pass its per-axis variance: the sample enters as (gyro - b_g), so its noise reaches the
   /// residual through the b_g columns of H and is added to R as gyro_variance H_bg H_bg^T.
-  /// iterations > 1: iterated EKF, relinearized at each new estimate.
+  /// iterations > 1: iterated EKF, relinearized at each new estimate. The correction is applied
+  /// to the state; the result says what happened (its dx is empty).
   UpdateResult update(const MeasurementModel& model, const std::vector<StateKey>& keys,
                       double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
 
@@ -126,15 +128,16 @@ class CalibrationFilter {
   void reopenCalibration();
   /// The error-state indices of the held states, into held_ (its storage reused).
   const std::vector<int>& heldIndices();
-  /// rows() into lin_, with the storage of the last update's (no allocation once it has grown).
-  void linearizeRows(const MeasurementModel& model, const std::vector<StateKey>& keys,
-                     double gyro_variance);
-  /// With p_b_m.z held (planar motion), models of the vehicle's motion are made blind to p_b_m
-  /// along the vehicle's vertical axis (common/models/planar_motion_projection.h).
-  std::shared_ptr<const MeasurementModel> planar(std::shared_ptr<const MeasurementModel> m) const;
-  /// update() of a vehicle-motion model as planar() would wrap it, without allocating.
+  /// rows() into the storage kept for this kind of model (no allocation once it has grown).
+  MeasurementRows& linearizeRows(const MeasurementModel& model, const std::vector<StateKey>& keys,
+                                 double gyro_variance);
+  /// update() of a vehicle-motion model: with p_b_m.z held (planar motion) the model is made
+  /// blind to p_b_m along the vehicle's vertical axis (common/models/planar_motion_projection.h),
+  /// without allocating.
   UpdateResult updatePlanar(const MeasurementModel& model, const std::vector<StateKey>& keys,
-                            double chi2_gate, double gyro_variance);
+                            double chi2_gate, double gyro_variance = 0.0, int iterations = 1);
+  /// The odometer interval's update (the preintegration since the clones), without allocating.
+  UpdateResult updateInterval(double t);
   void feedMotion(double t);  // bias-compensated IMU samples up to t into the motion detector
   /// The IMU preintegrated from time() to t; each sample is integrated once however often it
   /// is asked for (trajectory output, then the next update).
@@ -151,7 +154,7 @@ class CalibrationFilter {
   double motion_fed_t_ = 0.0;
   std::optional<ImuPreintegration> pending_;  // in place: one per propagation, not allocated
   double pending_t_ = 0.0;
-  std::unique_ptr<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ
+  std::optional<OdometerPreintegration> odo_pre_;  // since the clone kOdoP/kOdoQ; in place
   OdomSample last_odo_;
   PoseRates odo_rates_;  // at the interval's ends, for the odometer's delay (when estimated)
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
@@ -163,9 +166,10 @@ class CalibrationFilter {
   std::vector<int> held_states_;  // heldStates() of the options and dataset (calibration order)
   std::vector<int> held_;
   std::vector<BlockBinding> bindings_;
-  LinearizeScratch scratch_;
-  MeasurementRows lin_;
+  LinearizationCache linearization_;
   Eigen::VectorXd delta_, h_delta_;
+  UpdateResult result_;                  // the last update's, its correction's storage kept
+  std::vector<StateKey> interval_keys_;  // the odometer interval model's variables
   PropagationScratch propagation_;
 };
 

@@ -43,6 +43,12 @@ void addGyroNoise(MeasurementRows& rows, int bg, double variance) {
   }
 }
 
+/// What an update did; its correction is applied to the state, not returned (dx is empty, so
+/// returning it allocates nothing).
+UpdateResult outcome(const UpdateResult& r) {
+  return {Eigen::VectorXd(), r.nis, r.accepted, r.numerical_failure};
+}
+
 }  // namespace
 
 MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
@@ -53,53 +59,52 @@ MeasurementRows CalibrationFilter::rows(const MeasurementModel& model,
   return rows;
 }
 
-void CalibrationFilter::linearizeRows(const MeasurementModel& model,
-                                      const std::vector<StateKey>& keys, double gyro_variance) {
+MeasurementRows& CalibrationFilter::linearizeRows(const MeasurementModel& model,
+                                                  const std::vector<StateKey>& keys,
+                                                  double gyro_variance) {
   s_.bind(keys, bindings_);
-  linearize(model, bindings_, s_.dim(), lin_, scratch_);
-  addGyroNoise(lin_, s_.offset(state::kBg), gyro_variance);
+  LinearizationCache::Storage& kept = linearization_.forModel(model);
+  linearize(model, bindings_, s_.dim(), kept.rows, kept.scratch);
+  addGyroNoise(kept.rows, s_.offset(state::kBg), gyro_variance);
+  return kept.rows;
 }
 
 UpdateResult CalibrationFilter::update(const MeasurementModel& model,
                                        const std::vector<StateKey>& keys, double chi2_gate,
                                        double gyro_variance, int iterations) {
-  if (iterations <= 1) {
-    linearizeRows(model, keys, gyro_variance);
-    return updateLinearized(lin_, chi2_gate);
-  }
+  if (iterations <= 1)
+    return updateLinearized(linearizeRows(model, keys, gyro_variance), chi2_gate);
   // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
   // state, keep the prior covariance; the last iteration's gain updates the covariance.
   // Assigned, not constructed: the copy reuses the storage of the last update's (a registry
   // constructed here allocated once per variable, about 55 times per odometer interval).
   iterate_prior_ = s_;
   const StateRegistry& prior = iterate_prior_;
-  UpdateResult r;
+  UpdateResult& r = result_;
   for (int it = 0; it < iterations; ++it) {
-    linearizeRows(model, keys, gyro_variance);
-    MeasurementRows& lin = lin_;
-    delta_ = s_.minus(prior);
+    MeasurementRows& lin = linearizeRows(model, keys, gyro_variance);
+    s_.minus(prior, delta_);
     h_delta_.noalias() = lin.H * delta_;
     lin.residual -= h_delta_;  // residual linearized about the prior: r(x_i) - H d_i
     // Values and covariance back to the prior's, then updated in place (whole-registry copies
     // per iteration cost more than the update itself).
     s_.setValues(prior);
     s_.covariance() = prior.covariance();
-    r = kalmanUpdate(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
-                     &workspace_);
+    kalmanUpdateInto(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
+                     workspace_, r);
     numerical_failures_ += r.numerical_failure;
-    if (!r.accepted) return r;  // s_ holds the prior again
+    if (!r.accepted) return outcome(r);  // s_ holds the prior again
     s_.correct(r.dx);
-    if (r.dx.size() && (r.dx - delta_).norm() < 1e-9) break;
+    if ((r.dx - delta_).norm() < 1e-9) break;
   }
-  return r;
+  return outcome(r);
 }
 
 UpdateResult CalibrationFilter::updateLinearized(const MeasurementRows& rows, double chi2_gate) {
-  // Not const: returned by move, not copied.
-  UpdateResult r = kalmanUpdate(s_.covariance(), rows, chi2_gate, heldIndices(), &workspace_);
-  numerical_failures_ += r.numerical_failure;
-  if (r.accepted) s_.correct(r.dx);
-  return r;
+  kalmanUpdateInto(s_.covariance(), rows, chi2_gate, heldIndices(), workspace_, result_);
+  numerical_failures_ += result_.numerical_failure;
+  if (result_.accepted) s_.correct(result_.dx);
+  return outcome(result_);
 }
 
 }  // namespace giocal

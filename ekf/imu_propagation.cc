@@ -76,7 +76,10 @@ void propagateImu(StateRegistry& s, const ImuPreintegration& pre, PropagationScr
   Eigen::MatrixXd& FPnn = scratch.FPnn;
   FPnn.resize(15, m);
   for (int b = 0; b < m; ++b) FPnn.col(b) = FPn.col(idx[static_cast<size_t>(b)]);
-  const Eigen::Matrix<double, 15, 15> Pnn_new = FPnn * G.transpose() + Q;
+  // Into the fixed-size result directly: `FPnn * G^T + Q` made a heap temporary per call.
+  Eigen::Matrix<double, 15, 15> Pnn_new;
+  Pnn_new.noalias() = FPnn * G.transpose();
+  Pnn_new += Q;
   for (int a = 0; a < 15; ++a) {
     const int i = idx[static_cast<size_t>(a)];
     P.row(i) = FPn.row(a);

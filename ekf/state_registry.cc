@@ -72,8 +72,18 @@ void StateRegistry::condition(const std::vector<StateKey>& keys) {
 void StateRegistry::clone(const StateKey& key, const StateKey& copy) {
   StateBlock b = block(key);
   const int src = offset(key), m = b.tangentSize();
-  b.key = copy;
-  add(b, value(key), marginal(key));
+  Variable* existing = has(copy) ? &get(copy) : nullptr;
+  if (existing &&
+      (existing->offset < 0 || existing->block.kind != b.kind || existing->block.size != b.size)) {
+    remove(copy);  // known, or another shape: cloned anew at the end
+    existing = nullptr;
+  }
+  if (existing) {
+    existing->value = value(key);  // same size: no allocation
+  } else {
+    b.key = copy;
+    add(b, value(key), marginal(key));
+  }
   const int dst = offset(copy);
   P_.block(dst, 0, m, dim()) = P_.block(src, 0, m, dim());
   P_.block(0, dst, dim(), m) = P_.block(0, src, dim(), m);
@@ -130,7 +140,13 @@ void StateRegistry::setValues(const StateRegistry& other) {
 }
 
 Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
-  Eigen::VectorXd dx(dim());
+  Eigen::VectorXd dx;
+  minus(base, dx);
+  return dx;
+}
+
+void StateRegistry::minus(const StateRegistry& base, Eigen::VectorXd& dx) const {
+  dx.resize(dim());
   for (const auto& [key, v] : vars_) {
     if (v.offset < 0) continue;
     const Eigen::VectorXd& b = base.value(key);
@@ -140,7 +156,6 @@ Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
       dx.segment(v.offset, v.block.size) = v.value - b;
     }
   }
-  return dx;
 }
 
 std::vector<BlockBinding> StateRegistry::bind(const std::vector<StateKey>& keys) const {

@@ -26,7 +26,9 @@ class StateRegistry {
   /// covariance and stay as known values that models bind as constants. A variable whose
   /// variance is not positive is taken out without conditioning. Vector variables of size 1 only.
   void condition(const std::vector<StateKey>& keys);
-  /// Adds `copy` as a stochastic clone of `key`: same value, fully correlated with it.
+  /// Makes `copy` a stochastic clone of `key`: same value, fully correlated with it. An estimated
+  /// `copy` that exists is overwritten where it stands (what removing it and cloning again
+  /// gives, without resizing the covariance: the EKF re-clones every odometer interval).
   void clone(const StateKey& key, const StateKey& copy);
 
   /// True for an estimated or a known variable.
@@ -51,6 +53,8 @@ class StateRegistry {
   void setValues(const StateRegistry& other);
   /// The correction that takes `base` (same variables) to this state: this = base (+) dx.
   Eigen::VectorXd minus(const StateRegistry& base) const;
+  /// The same into `dx`, reusing its storage.
+  void minus(const StateRegistry& base, Eigen::VectorXd& dx) const;
 
   /// Bindings of a model's blocks to the variables `keys[k]` (throws for an unknown key); a known
   /// variable binds with error offset -1, so it enters the model as a constant.

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace giocal {
 
@@ -14,8 +15,18 @@ constexpr double kDowndateTolerance = 1e-9;  // of a prior variance, a negative 
 UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
                           const std::vector<int>& held, KalmanWorkspace* workspace) {
   UpdateResult out;
-  KalmanWorkspace local;
-  KalmanWorkspace& ws = workspace ? *workspace : local;
+  // Constructed only when needed: an empty workspace's sparse matrix allocates.
+  std::optional<KalmanWorkspace> local;
+  kalmanUpdateInto(P, rows, chi2_gate, held, workspace ? *workspace : local.emplace(), out);
+  if (!out.accepted) out.dx.resize(0);
+  return out;
+}
+
+void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
+                      const std::vector<int>& held, KalmanWorkspace& ws, UpdateResult& out) {
+  out.nis = 0.0;
+  out.accepted = false;
+  out.numerical_failure = false;
   const Eigen::Index n = P.rows(), m = rows.H.rows();
   // H's zeros skipped: GNSS and odometer rows touch a few blocks of a long state.
   const Eigen::SparseMatrix<double>& H = ws.sparse(rows.H);
@@ -31,7 +42,7 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   const Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(S);  // in place: S becomes its factor
   if (llt.info() != Eigen::Success) {
     out.numerical_failure = true;
-    return out;
+    return;
   }
   Eigen::Map<Eigen::VectorXd> innovation(ws.matrix(KalmanWorkspace::kInnovation, m, 1).data(), m);
   innovation = -rows.residual;
@@ -40,7 +51,7 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
   s_innovation = innovation;
   llt.solveInPlace(s_innovation);
   out.nis = innovation.dot(s_innovation);
-  if (!(out.nis <= chi2_gate)) return out;
+  if (!(out.nis <= chi2_gate)) return;
   out.dx.noalias() = PHt * s_innovation;  // K0 v, K0 = P H^T S^-1 never formed
   for (int i : held) out.dx[i] = 0.0;
   // Joseph form (I-KH) P (I-KH)^T + K R K^T with the optimal gain K0 = PH^T S^-1 and K = D K0,
@@ -66,12 +77,10 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
       (P.diagonal().array() < -kDowndateTolerance * P_before.diagonal().array().abs()).any();
   if (overshot || !P.diagonal().allFinite()) {
     P = P_before;
-    out.dx.resize(0);
     out.numerical_failure = true;
-    return out;
+    return;
   }
   out.accepted = true;
-  return out;
 }
 
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows) {

@@ -26,6 +26,10 @@ struct UpdateResult {
 /// others. `workspace` (optional) keeps the temporaries' storage between updates.
 UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
                           const std::vector<int>& held = {}, KalmanWorkspace* workspace = nullptr);
+/// The same into `out`, whose dx keeps its storage from one update to the next (a filter that
+/// must not allocate per sample keeps one); out.dx is the correction only when out.accepted.
+void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
+                      const std::vector<int>& held, KalmanWorkspace& workspace, UpdateResult& out);
 
 /// |innovation| / sqrt(S_ii) of every row, S = H P H^T + R: the per-row outlier test.
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows);

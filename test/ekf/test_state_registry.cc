@@ -108,6 +108,38 @@ TEST(StateRegistry, CloneIsFullyCorrelatedAndMinusInvertsCorrect) {
   EXPECT_LT((s.minus(base) - dx).norm(), 1e-12);
 }
 
+TEST(StateRegistry, CloningOverAnExistingCopyIsRemovingItAndCloningAgainInPlace) {
+  // Two registries with a clone of p, moved on by a correlated update: one re-clones in place,
+  // the other removes the clone and clones again (which puts it at the end of the state).
+  StateRegistry in_place, again;
+  const Eigen::MatrixXd P = spd(10, 0.2);
+  for (StateRegistry* s : {&in_place, &again}) {
+    s->add(vectorBlock(state::kP), Eigen::Vector3d(1, 2, 3), spd(3, 1.0));
+    s->add(vectorBlock(state::kV), Eigen::Vector3d(0.1, 0.2, 0.3), spd(3, 0.1));
+    s->clone(state::kP, at(state::kP, Copy::kOdo));
+    s->add(vectorBlock(kN5, 1), Eigen::VectorXd::Constant(1, 7.0), spd(1, 4.0));
+    s->covariance() = P;
+    s->value(state::kP) = Eigen::Vector3d(4, 5, 6);
+  }
+  const int before = in_place.offset(at(state::kP, Copy::kOdo));
+  in_place.clone(state::kP, at(state::kP, Copy::kOdo));
+  again.remove(at(state::kP, Copy::kOdo));
+  again.clone(state::kP, at(state::kP, Copy::kOdo));
+  EXPECT_EQ(in_place.offset(at(state::kP, Copy::kOdo)), before);  // no resize, no move
+  EXPECT_EQ(in_place.value(at(state::kP, Copy::kOdo)), Eigen::Vector3d(4, 5, 6));
+  // The same joint covariance, variable by variable.
+  const std::vector<StateKey> keys{state::kP, state::kV, at(state::kP, Copy::kOdo), kN5};
+  for (const StateKey& a : keys) {
+    for (const StateKey& b : keys) {
+      const auto block = [&](const StateRegistry& s) {
+        return Eigen::MatrixXd(s.covariance().block(
+            s.offset(a), s.offset(b), s.block(a).tangentSize(), s.block(b).tangentSize()));
+      };
+      EXPECT_EQ(block(in_place), block(again)) << a.str() << " " << b.str();
+    }
+  }
+}
+
 TEST(StateRegistry, ConditionedVariablesAreKnownConstantsWithTheJointSchurComplement) {
   const StateKey kN7 = ambiguityKey(SatId{GnssSystem::kGps, 7}, '1');
   StateRegistry s;
