@@ -139,12 +139,6 @@ void StateRegistry::setValues(const StateRegistry& other) {
   for (auto& entry : vars_) (entry.second.value = (from++)->second.value);
 }
 
-Eigen::VectorXd StateRegistry::minus(const StateRegistry& base) const {
-  Eigen::VectorXd dx;
-  minus(base, dx);
-  return dx;
-}
-
 void StateRegistry::minus(const StateRegistry& base, Eigen::VectorXd& dx) const {
   dx.resize(dim());
   for (const auto& [key, v] : vars_) {

@@ -51,9 +51,8 @@ class StateRegistry {
   /// The values of `other` (the same variables), the covariance kept: an iterated update goes
   /// back to its prior's values without copying the whole registry.
   void setValues(const StateRegistry& other);
-  /// The correction that takes `base` (same variables) to this state: this = base (+) dx.
-  Eigen::VectorXd minus(const StateRegistry& base) const;
-  /// The same into `dx`, reusing its storage.
+  /// The correction that takes `base` (same variables) to this state: this = base (+) dx, into
+  /// `dx` (its storage reused).
   void minus(const StateRegistry& base, Eigen::VectorXd& dx) const;
 
   /// Bindings of a model's blocks to the variables `keys[k]` (throws for an unknown key); a known
