@@ -231,7 +231,11 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
   // motion constraint, or a new clone. Between those the samples are only preintegrated.
   feedMotion(sample.t);
   motion_.addOdometer(sample.t, sample.v);
-  const bool still = motion_.isStatic(), nhc = motion_.nhcApplies();
+  const bool still = motion_.isStatic();
+  // NHC once per interval with the samples since (a stretch where it stops holding starts again).
+  nhc_pending_ = motion_.nhcApplies() ? nhc_pending_ + 1 : 0;
+  const bool nhc =
+      nhc_pending_ > 0 && sample.t - nhc_last_t_ >= options_.models.nhc_interval_s - 1e-9;
   interval_moved_ = interval_moved_ || !still;
   const bool restart = !odo_pre_ || sample.t - last_odo_.t > options_.max_odometer_gap_s;
   const double piece = restart ? 0.0 : sample.t - last_odo_.t;
@@ -280,8 +284,10 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     // extrinsic (errors in variables).
     static const std::vector<StateKey> kNhcKeys{state::kV, state::kQ, state::kBg, state::kPbm,
                                                 state::kQbm};
-    updatePlanar(NhcModel(gyro.rate, options_.models.nhc_sigma), kNhcKeys,
-                 chi2Quantile(options_.chi2_probability, 2), gyro.variance);
+    updatePlanar(NhcModel(gyro.rate, options_.models.nhc_sigma / std::sqrt(nhc_pending_)),
+                 kNhcKeys, chi2Quantile(options_.chi2_probability, 2), gyro.variance);
+    nhc_pending_ = 0;
+    nhc_last_t_ = sample.t;
   }
   return step;
 }

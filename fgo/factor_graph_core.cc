@@ -269,8 +269,9 @@ EpochOutcome FactorGraphCore::gnss(const ObsEpoch& rover, const ObsEpoch& base,
     }
   }
   if (motion_.nhcApplies()) {
-    // The EKF applies NHC at every odometer sample where it holds; one factor per epoch carries
-    // the information of those samples, so that both estimators weigh the constraint alike.
+    // The EKF applies NHC once per models.nhc_interval_s for the odometer samples where it holds;
+    // one factor per epoch carries the information of those samples, so that both estimators
+    // weigh the constraint alike.
     const GyroMean g = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                                 in_.description.imu_noise.gyro_noise_density);
     const double sigma = o_.models.nhc_sigma / std::sqrt(std::max(1, nhc_samples_));

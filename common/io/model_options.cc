@@ -26,6 +26,7 @@ ModelOptions readModelOptions(const YamlFields& y) {
   o.motion.nhc_min_speed = y.numberOr(s + "nhc_min_speed", o.motion.nhc_min_speed, 0.0, 100.0);
   o.zupt_sigma = y.numberOr(s + "zupt_sigma", o.zupt_sigma, 1e-6, 10.0);
   o.nhc_sigma = y.numberOr(s + "nhc_sigma", o.nhc_sigma, 1e-6, 10.0);
+  o.nhc_interval_s = y.numberOr(s + "nhc_interval_s", o.nhc_interval_s, 0.0, 10.0);
   o.lateral_speed_density =
       y.numberOr(s + "lateral_speed_density", o.lateral_speed_density, 0.0, 10.0);
   o.tilt_rate_density = y.numberOr(s + "tilt_rate_density", o.tilt_rate_density, 0.0, 10.0);

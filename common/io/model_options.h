@@ -14,6 +14,10 @@ struct ModelOptions {
   MotionDetectorOptions motion;
   double zupt_sigma = 0.01;             // zero-velocity noise [m/s]
   double nhc_sigma = 0.05;              // lateral/vertical vehicle speed noise [m/s]
+  // The EKF applies NHC once per this interval, the samples' information in one update (sigma /
+  // sqrt(samples)), as the factor graph does once per epoch: the same constraint at a fraction of
+  // the covariance updates (0: at every odometer sample) [s].
+  double nhc_interval_s = 0.1;
   double lateral_speed_density = 0.01;  // odometer slip and uneven ground [m/s/sqrt(Hz)]
   double tilt_rate_density = 0.005;     // roll/pitch rate of uneven ground [rad/s/sqrt(Hz)]
   double lever_arm_min_turn = 6.0;      // an odometer interval informs p_b_m only when the states
