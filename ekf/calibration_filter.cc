@@ -284,8 +284,8 @@ OdometerStep CalibrationFilter::updateOdometer(const OdomSample& sample) {
     // extrinsic (errors in variables).
     static const std::vector<StateKey> kNhcKeys{state::kV, state::kQ, state::kBg, state::kPbm,
                                                 state::kQbm};
-    updatePlanar(NhcModel(gyro.rate, options_.models.nhc_sigma / std::sqrt(nhc_pending_)),
-                 kNhcKeys, chi2Quantile(options_.chi2_probability, 2), gyro.variance);
+    updatePlanar(NhcModel(gyro.rate, options_.models.nhc_sigma / std::sqrt(nhc_pending_)), kNhcKeys,
+                 chi2Quantile(options_.chi2_probability, 2), gyro.variance);
     nhc_pending_ = 0;
     nhc_last_t_ = sample.t;
   }

@@ -159,8 +159,8 @@ class CalibrationFilter {
   PoseRates odo_rates_;  // at the interval's ends, for the odometer's delay (when estimated)
   bool interval_moved_ = false;  // the motion detector saw motion during the odometer interval
   int odometer_rejected_in_row_ = 0;
-  int nhc_pending_ = 0;                // odometer samples under NHC since its last update
-  double nhc_last_t_ = -1e300;         // time of the last NHC update
+  int nhc_pending_ = 0;         // odometer samples under NHC since its last update
+  double nhc_last_t_ = -1e300;  // time of the last NHC update
   long numerical_failures_ = 0;
   KalmanWorkspace workspace_;
   StateRegistry iterate_prior_;  // the iterated update's prior, kept for its storage

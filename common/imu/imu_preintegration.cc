@@ -11,11 +11,7 @@ namespace {
 // One step's rotation terms from one set of coefficients: E = Exp(phi), Jr = Jr(phi),
 // G1 = Jr(-phi) = Jr^T = int_0^1 Exp(s phi) ds and G2 = gamma2(phi) (four trigonometric
 // evaluations per IMU sample were a tenth of the preintegration).
-struct StepRotation {
-  Mat3 E, Jr, G1, G2;
-};
-
-StepRotation stepRotation(const Vec3& phi) {
+ImuPreintegration::StepRotation stepRotation(const Vec3& phi) {
   const So3Coefficients k = so3Coefficients(phi.norm());
   const Mat3 K = skew(phi), KK = K * K;
   const Mat3 B = k.b * K, C = k.c * KK;
@@ -124,7 +120,8 @@ void ImuPreintegration::addStep(const Step& s) {
   w += 0.5 * w.cross(d);
   a -= 0.5 * a.cross(d);
   const Vec3 phi = w * dt;
-  const auto [E, Jr, G1, G2] = stepRotation(phi);
+  const StepRotation rot = stepRotation(phi);
+  const Mat3 &E = rot.E, &G1 = rot.G1, &G2 = rot.G2;
   const Vec3 dv_step = dR_ * G1 * a * dt;
   const Vec3 dp_step = dR_ * G2 * a * dt2;
 
@@ -133,10 +130,7 @@ void ImuPreintegration::addStep(const Step& s) {
     c.dR0 = dR_;
     c.w = w;
     c.a = a;
-    c.E = E;
-    c.Jr = Jr;
-    c.G1 = G1;
-    c.G2 = G2;
+    c.rot = rot;
     c.eg2 = s.extra_gyro_density * s.extra_gyro_density;
     c.ea2 = s.extra_accel_density * s.extra_accel_density;
   }
@@ -165,7 +159,7 @@ void ImuPreintegration::advanceCovariance() {
   // One sample keeps its own terms (bit for bit what a step per sample gives); several enter as
   // one step at their mean rate and specific force, their extra noise weighted by duration.
   Vec3 w = c.w, a = c.a;
-  StepRotation rot{c.E, c.Jr, c.G1, c.G2};
+  StepRotation rot = c.rot;
   if (c.samples > 1) {
     w = c.phi / dt;
     a = c.a_dt / dt;

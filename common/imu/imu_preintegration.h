@@ -54,6 +54,11 @@ struct ImuBridgeModel {
 
 class ImuPreintegration {
  public:
+  /// One step's rotation terms: E = Exp(phi), Jr = Jr(phi), G1 = Jr(-phi), G2 = gamma2(phi).
+  struct StepRotation {
+    Mat3 E, Jr, G1, G2;
+  };
+
   /// gravity_n and omega_ie_n come from the LocalFrame; biases (and the gyro's tilt) are the
   /// linearization point. Without a tilt it is zero and its Jacobian is not carried
   /// (tiltJacobian() stays zero): an estimator that does not estimate it saves the work.
@@ -117,11 +122,12 @@ class ImuPreintegration {
     int samples = 0;
     double dt = 0.0;
     Vec3 phi = Vec3::Zero(), a_dt = Vec3::Zero();  // sums of the rate and specific force * dt
-    double gyro_var_dt = 0.0, accel_var_dt = 0.0;   // sums of the extra densities^2 * dt
-    Mat3 dR0;                                       // dR_ at the first sample
-    Vec3 w, a;                                      // the first sample's, and its rotation terms
-    Mat3 E, Jr, G1, G2;
-    double eg2 = 0.0, ea2 = 0.0;                    // and its extra densities^2
+    double gyro_var_dt = 0.0, accel_var_dt = 0.0;  // sums of the extra densities^2 * dt
+    Mat3 dR0;                                      // dR_ at the first sample
+    // The first sample's rate, specific force, rotation terms and extra densities^2.
+    Vec3 w, a;
+    StepRotation rot;
+    double eg2 = 0.0, ea2 = 0.0;
   };
   void reset();
   /// Checks a step's inputs (throws std::invalid_argument).

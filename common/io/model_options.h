@@ -12,8 +12,8 @@ class YamlFields;
 
 struct ModelOptions {
   MotionDetectorOptions motion;
-  double zupt_sigma = 0.01;             // zero-velocity noise [m/s]
-  double nhc_sigma = 0.05;              // lateral/vertical vehicle speed noise [m/s]
+  double zupt_sigma = 0.01;  // zero-velocity noise [m/s]
+  double nhc_sigma = 0.05;   // lateral/vertical vehicle speed noise [m/s]
   // The EKF applies NHC once per this interval, the samples' information in one update (sigma /
   // sqrt(samples)), as the factor graph does once per epoch: the same constraint at a fraction of
   // the covariance updates (0: at every odometer sample) [s].
