@@ -86,7 +86,7 @@ void ImuPreintegration::reset() {
   cov_.setZero();
   J_bias_.setZero();
   J_tilt_.setZero();
-  pending_ = PendingCovariance{};
+  pending_.clear();
 }
 
 void ImuPreintegration::checkStep(const Step& s) {
@@ -214,7 +214,7 @@ void ImuPreintegration::advanceCovariance() {
     tilt_as_bias.bottomRows<3>() = -0.5 * skew(w).leftCols<2>();
     J_tilt_ = F.apply<2>(J_tilt_, tilt_as_bias);
   }
-  c = PendingCovariance{};
+  c.clear();
 }
 
 void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, double t0,

@@ -128,6 +128,13 @@ class ImuPreintegration {
     Vec3 w, a;
     StepRotation rot;
     double eg2 = 0.0, ea2 = 0.0;
+    /// Empties the sums; the first-sample fields are written before they are read.
+    void clear() {
+      samples = 0;
+      dt = gyro_var_dt = accel_var_dt = 0.0;
+      phi.setZero();
+      a_dt.setZero();
+    }
   };
   void reset();
   /// Checks a step's inputs (throws std::invalid_argument).
