@@ -67,3 +67,9 @@ set(GIOCAL_REAL_TESTS
   UbxRealLog.GalileoEphemeridesPositionTheReceiverAsGpsDoes
   UbxRealLog.GpsEphemeridesAgreeWithConvbin
 )
+# Tests that assert an open issue's target the data do not reach yet: ctest runs them with
+# WILL_FAIL under the label `real_open` (test/CMakeLists.txt), so each reports the day its target is
+# met (then it moves to the lists above) instead of being loosened to pass.
+set(GIOCAL_OPEN_TARGET_TESTS
+  RealHusky.OpenTargetBothValidateBetterAndAgreeWithinThreeSigmas
+)

@@ -226,5 +226,44 @@ TEST(RealHusky, AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed) {
   }
 }
 
+// The targets of "Real logs decide" (item 3) and "What a reviewer found" (item 5) on this bag, as
+// the issues state them: each estimator's calibration validates better than the guess, and the
+// two agree within three combined stated sigmas on every parameter. Neither holds today
+// (2026-11-28: "no better" at ratios 0.95 and 0.97; s_v 5.9 and roll 4.9 combined sigmas apart;
+// docs/results.md, "What limits validate on the Husky bag"), so ctest runs this test with
+// WILL_FAIL (label real_open, test/labels.cmake): it reports the day the targets are met instead
+// of being loosened. That its pipeline runs is asserted by the tests above.
+TEST(RealHusky, OpenTargetBothValidateBetterAndAgreeWithinThreeSigmas) {
+  test::TempDir dir;
+  const std::string data = dir.file("husky"), pos = data + "/gnss.pos";
+  std::string log;
+  ASSERT_EQ(importHusky(data, &log), 0) << log;
+  nlohmann::json s[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string est = k == 0 ? "ekf" : "fgo", out = dir.file(est);
+    ASSERT_EQ(run("calibrate --data " + data + " --gnss lc --pos " + pos + " --estimator " + est +
+                      " --quiet --out " + out,
+                  &log),
+              0)
+        << log;
+    s[k] = summary(out);
+    EXPECT_EQ(s[k]["validation"]["verdict"].get<std::string>(), "better") << est;
+  }
+  // Each parameter with its stated sigma (p_b_m.y, held at the guess, agrees by construction).
+  const auto agree = [&](const std::string& name, const std::string& key, int i) {
+    const auto at = [&](const nlohmann::json& j) {
+      return i < 0 ? j[key].get<double>() : j[key][static_cast<size_t>(i)].get<double>();
+    };
+    const double d = std::abs(at(s[0]["final"]) - at(s[1]["final"]));
+    EXPECT_LE(d, 3.0 * std::hypot(at(s[0]["sd"]), at(s[1]["sd"]))) << name;
+  };
+  agree("s_v", "s_v", -1);
+  agree("s_w", "s_w", -1);
+  for (int i = 0; i < 3; ++i) {
+    agree("p_b_m " + std::to_string(i), "p_b_m", i);
+    agree("rpy_b_m " + std::to_string(i), "rpy_b_m_deg", i);
+  }
+}
+
 }  // namespace
 }  // namespace giocal
