@@ -31,22 +31,18 @@ LtDL factorLtDL(const Eigen::MatrixXd& Qin) {
 
 namespace {
 
-// Integer Gauss transformation making |L(i, j)| <= 1/2. Z^T's inverse follows each elementary
-// step (its inverse applied from the other side), exactly in integers, instead of a general
-// inversion at the end (which cost as much as the decorrelation itself).
-void gauss(Eigen::MatrixXd& L, Eigen::MatrixXd& Z, Eigen::MatrixXd& Zt_inv, int i, int j) {
+// Integer Gauss transformation making |L(i, j)| <= 1/2, recorded as a step of Z.
+void gauss(Eigen::MatrixXd& L, std::vector<ZStep>& steps, int i, int j) {
   if (std::abs(L(i, j)) < 0.5) return;  // rounds to 0: most calls, without the rounding's cost
   const double mu = std::round(L(i, j));
   if (mu == 0.0) return;
   const int n = static_cast<int>(L.rows());
   for (int k = i; k < n; ++k) L(k, j) -= mu * L(k, i);
-  Z.col(j) -= mu * Z.col(i);
-  Zt_inv.col(i) += mu * Zt_inv.col(j);
+  steps.push_back({i, j, mu});
 }
 
 // Swaps ambiguities j and j+1, updating L and D so that Q stays L^T D L.
-void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, Eigen::MatrixXd& Z,
-             Eigen::MatrixXd& Zt_inv) {
+void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, std::vector<ZStep>& steps) {
   const int n = static_cast<int>(L.rows());
   const double eta = D[j] / del, lam = D[j + 1] * L(j + 1, j) / del;
   D[j] = eta * D[j + 1];
@@ -58,27 +54,65 @@ void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, Eigen::M
   }
   L(j + 1, j) = lam;
   for (int k = j + 2; k < n; ++k) std::swap(L(k, j), L(k, j + 1));
-  Z.col(j).swap(Z.col(j + 1));
-  Zt_inv.col(j).swap(Zt_inv.col(j + 1));
+  steps.push_back({-1, j, 0.0});
 }
 
 double sgn(double x) { return x <= 0.0 ? -1.0 : 1.0; }
 
 }  // namespace
 
+Eigen::VectorXd Decorrelation::toDecorrelated(const Eigen::VectorXd& a) const {
+  // Z = G_1 ... G_m, so Z^T a = G_m^T ... G_1^T a: the first step first. A Gauss step's G^T takes
+  // mu times entry i from entry j.
+  Eigen::VectorXd z = a;
+  for (const ZStep& s : steps) {
+    if (s.i < 0) {
+      std::swap(z[s.j], z[s.j + 1]);
+    } else {
+      z[s.j] -= s.mu * z[s.i];
+    }
+  }
+  return z;
+}
+
+Eigen::VectorXd Decorrelation::fromDecorrelated(const Eigen::VectorXd& z) const {
+  Eigen::VectorXd a = z;
+  for (auto s = steps.rbegin(); s != steps.rend(); ++s) {
+    if (s->i < 0) {
+      std::swap(a[s->j], a[s->j + 1]);
+    } else {
+      a[s->j] += s->mu * a[s->i];
+    }
+  }
+  return a;
+}
+
+Eigen::MatrixXd Decorrelation::Z() const {
+  const auto n = ltdl.D.size();
+  Eigen::MatrixXd Z = Eigen::MatrixXd::Identity(n, n);
+  for (const ZStep& s : steps) {
+    if (s.i < 0) {
+      Z.col(s.j).swap(Z.col(s.j + 1));
+    } else {
+      Z.col(s.j) -= s.mu * Z.col(s.i);
+    }
+  }
+  return Z;
+}
+
 Decorrelation decorrelate(const Eigen::MatrixXd& Q) {
   const int n = static_cast<int>(Q.rows());
-  Decorrelation d{Eigen::MatrixXd::Identity(n, n), Eigen::MatrixXd::Identity(n, n), factorLtDL(Q)};
+  Decorrelation d{{}, factorLtDL(Q)};
   Eigen::MatrixXd& L = d.ltdl.L;
   Eigen::VectorXd& D = d.ltdl.D;
   int j = n - 2, k = n - 2;
   while (j >= 0) {
     if (j <= k) {
-      for (int i = j + 1; i < n; ++i) gauss(L, d.Z, d.Zt_inv, i, j);
+      for (int i = j + 1; i < n; ++i) gauss(L, d.steps, i, j);
     }
     const double del = D[j] + L(j + 1, j) * L(j + 1, j) * D[j + 1];
     if (del + 1e-6 < D[j + 1]) {
-      permute(L, D, j, del, d.Z, d.Zt_inv);
+      permute(L, D, j, del, d.steps);
       k = j;
       j = n - 2;
     } else {
@@ -94,7 +128,12 @@ namespace {
 SearchResult searchDecorrelated(const Eigen::MatrixXd& L, const Eigen::VectorXd& D,
                                 const Eigen::VectorXd& zs, int m) {
   const int n = static_cast<int>(zs.size());
-  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n, n);
+  // zb[k] = zs[k] + C(k + 1, k), where C(r, k) sums (z - zb) * L(., k) over the levels r..n-1,
+  // from the top down (C(n, k) = 0). A step of z at level j makes rows r <= j of every lower
+  // column stale; path[k] is the highest stale row of column k, so a descent redoes only the
+  // rows below the highest level that moved, not all k of them (Chang, Yang & Zhou 2005).
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n + 1, n);
+  std::vector<int> path(static_cast<size_t>(n), n - 1);
   Eigen::VectorXd dist(n), zb(n), z(n), step(n);
   std::vector<Eigen::VectorXd> cand;
   std::vector<double> norms;
@@ -111,8 +150,10 @@ SearchResult searchDecorrelated(const Eigen::MatrixXd& L, const Eigen::VectorXd&
       if (k != 0) {
         --k;
         dist[k] = newdist;
-        for (int i = 0; i <= k; ++i) S(k, i) = S(k + 1, i) + (z[k + 1] - zb[k + 1]) * L(k + 1, i);
-        zb[k] = zs[k] + S(k, k);
+        for (int r = path[static_cast<size_t>(k)]; r > k; --r)
+          C(r, k) = C(r + 1, k) + (z[r] - zb[r]) * L(r, k);
+        path[static_cast<size_t>(k)] = k;
+        zb[k] = zs[k] + C(k + 1, k);
         z[k] = std::round(zb[k]);
         y = zb[k] - z[k];
         step[k] = sgn(y);
@@ -137,6 +178,11 @@ SearchResult searchDecorrelated(const Eigen::MatrixXd& L, const Eigen::VectorXd&
       z[k] += step[k];
       y = zb[k] - z[k];
       step[k] = -step[k] - sgn(step[k]);
+      // Rows <= k of the lower columns are stale now. Where one already is, so are those below
+      // it (a column is refreshed only after the one above it), hence the early stop.
+      for (int i = k - 1; i >= 0 && path[static_cast<size_t>(i)] < k; --i) {
+        path[static_cast<size_t>(i)] = k;
+      }
     }
   }
   std::vector<size_t> order(cand.size());
@@ -157,10 +203,10 @@ SearchResult integerSearch(const Eigen::VectorXd& a, const Eigen::MatrixXd& Q, i
   // Shift by the rounded float first: integer translations commute with the search and keep
   // the numbers small.
   const Eigen::VectorXd a_int = a.array().round().matrix();
-  const Eigen::VectorXd zs = d.Z.transpose() * (a - a_int);
+  const Eigen::VectorXd zs = d.toDecorrelated(a - a_int);
   SearchResult r = searchDecorrelated(d.ltdl.L, d.ltdl.D, zs, m);
   r.conditional_variances = d.ltdl.D;
-  for (auto& c : r.candidates) c = (d.Zt_inv * c).array().round().matrix() + a_int;
+  for (auto& c : r.candidates) c = d.fromDecorrelated(c).array().round().matrix() + a_int;
   return r;
 }
 

@@ -18,11 +18,25 @@ struct LtDL {
 /// Throws std::invalid_argument when Q is not positive definite.
 LtDL factorLtDL(const Eigen::MatrixXd& Q);
 
-/// The decorrelating transformation: z = Z^T a has covariance Z^T Q Z = L^T diag(D) L.
+/// One elementary step of a Z-transform: an integer Gauss transformation (column j of Z minus mu
+/// times column i) or, with i = -1, a swap of columns j and j + 1.
+struct ZStep {
+  int i = -1, j = 0;
+  double mu = 0.0;
+};
+
+/// The decorrelating transformation: z = Z^T a has covariance Z^T Q Z = L^T diag(D) L. Z is kept
+/// as its steps: applying them to a vector costs one operation each where forming Z and its
+/// inverse cost a column each (most of the decorrelation's time on a 40-ambiguity epoch).
 struct Decorrelation {
-  Eigen::MatrixXd Z;       // integer, unimodular
-  Eigen::MatrixXd Zt_inv;  // (Z^T)^-1, integer too
-  LtDL ltdl;               // of Z^T Q Z
+  std::vector<ZStep> steps;  // Z = I times each step, in order: integer, unimodular
+  LtDL ltdl;                 // of Z^T Q Z
+  /// Z^T a.
+  Eigen::VectorXd toDecorrelated(const Eigen::VectorXd& a) const;
+  /// (Z^T)^-1 z: the steps undone in reverse order (exact for integer z).
+  Eigen::VectorXd fromDecorrelated(const Eigen::VectorXd& z) const;
+  /// Z itself, formed from the steps (for checks).
+  Eigen::MatrixXd Z() const;
 };
 Decorrelation decorrelate(const Eigen::MatrixXd& Q);
 

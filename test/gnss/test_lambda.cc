@@ -66,13 +66,21 @@ TEST(Lambda, ZTransformIsUnimodularAndDecorrelates) {
     const int n = 2 + trial % 9;
     const Eigen::MatrixXd Q = randomCovariance(rng, n);
     const Decorrelation d = decorrelate(Q);
+    const Eigen::MatrixXd Z = d.Z();
     // Integer entries, determinant +-1.
-    EXPECT_LT((d.Z - d.Z.array().round().matrix()).norm(), 1e-12);
-    EXPECT_NEAR(std::abs(d.Z.determinant()), 1.0, 1e-6);
-    // The inverse of Z^T kept along the transformation, integer and exact.
-    EXPECT_LT((d.Zt_inv - d.Zt_inv.array().round().matrix()).norm(), 1e-12);
-    EXPECT_EQ((d.Z.transpose() * d.Zt_inv - Eigen::MatrixXd::Identity(n, n)).norm(), 0.0);
-    const Eigen::MatrixXd Qz = d.Z.transpose() * Q * d.Z;
+    EXPECT_LT((Z - Z.array().round().matrix()).norm(), 1e-12);
+    EXPECT_NEAR(std::abs(Z.determinant()), 1.0, 1e-6);
+    // The steps undone give the inverse of Z^T, integer and exact; done, Z^T itself.
+    Eigen::MatrixXd Zt_inv(n, n);
+    for (int k = 0; k < n; ++k) {
+      Zt_inv.col(k) = d.fromDecorrelated(Eigen::VectorXd::Unit(n, k));
+      EXPECT_EQ((d.toDecorrelated(Eigen::VectorXd::Unit(n, k)) - Z.transpose().col(k)).norm(), 0.0);
+    }
+    EXPECT_LT((Zt_inv - Zt_inv.array().round().matrix()).norm(), 1e-12);
+    EXPECT_EQ((Z.transpose() * Zt_inv - Eigen::MatrixXd::Identity(n, n)).norm(), 0.0);
+    const Eigen::VectorXd a = Eigen::VectorXd::LinSpaced(n, -3.3, 4.1);
+    EXPECT_LT((d.toDecorrelated(a) - Z.transpose() * a).norm(), 1e-12 * (1.0 + Z.norm()));
+    const Eigen::MatrixXd Qz = Z.transpose() * Q * Z;
     EXPECT_LT((d.ltdl.L.transpose() * d.ltdl.D.asDiagonal() * d.ltdl.L - Qz).norm(),
               1e-8 * Qz.norm());
     // Conditioning improves (the geometry-dominated Q has a condition number in the hundreds).
@@ -100,6 +108,36 @@ TEST(Lambda, SearchEqualsBruteForceOnRandomProblems) {
     EXPECT_NEAR(r.squared_norms[0], best_norm, 1e-6 * (1 + best_norm));
     EXPECT_NEAR(r.squared_norms[1], second, 1e-6 * (1 + second));
     EXPECT_NEAR(qnorm(a, Q, r.candidates[1]), r.squared_norms[1], 1e-6 * (1 + second));
+  }
+}
+
+// At the sizes of a multi-system epoch (12-40 ambiguities, floats far from integers so that the
+// search backtracks) brute force is out of reach: the norms the search reports must be those of
+// the vectors it returns (a stale partial sum in the search breaks this: checked by leaving out
+// the search's staleness marks), the two must differ, and no vector one step away from the best
+// may be better than the second.
+TEST(Lambda, SearchOnFortyAmbiguitiesReportsTrueNormsAndIsLocallyOptimal) {
+  std::mt19937 rng(4);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int trial = 0; trial < 12; ++trial) {
+    const int n = 12 + 28 * trial / 11;
+    const Eigen::MatrixXd Q = 0.05 * randomCovariance(rng, n);
+    Eigen::VectorXd a(n);
+    for (int i = 0; i < n; ++i) a[i] = 30.0 * g(rng);
+    const SearchResult r = integerSearch(a, Q, 2);
+    ASSERT_EQ(r.candidates.size(), 2u);
+    EXPECT_GT((r.candidates[0] - r.candidates[1]).norm(), 0.5);
+    for (int c = 0; c < 2; ++c) {
+      const double q = qnorm(a, Q, r.candidates[static_cast<size_t>(c)]);
+      EXPECT_NEAR(r.squared_norms[static_cast<size_t>(c)], q, 1e-6 * (1.0 + q)) << n;
+    }
+    for (int i = 0; i < n; ++i) {
+      for (const double s : {-1.0, 1.0}) {
+        Eigen::VectorXd z = r.candidates[0];
+        z[i] += s;
+        EXPECT_GE(qnorm(a, Q, z), r.squared_norms[1] * (1.0 - 1e-9)) << n << " " << i;
+      }
+    }
   }
 }
 
