@@ -7,11 +7,6 @@
 #include "import/beidou_nav.h"
 
 namespace giocal::import {
-namespace {
-
-double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
-
-}  // namespace
 
 std::optional<Ephemeris> decodeBeidouD1(const SatId& sat, const BitBuffer& sf1,
                                         const BitBuffer& sf2, const BitBuffer& sf3, double t_rx) {

@@ -11,8 +11,6 @@ namespace {
 
 constexpr uint32_t kFrameSeconds = 3;  // a D2 frame; subframe 1 carries one page per frame
 
-double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
-
 int pageNumber(const BitBuffer& sf) { return static_cast<int>(sf.u(42, 4)); }
 
 // A parameter whose high bits end one page and whose low bits (`lsb_len` of them) start the next.

@@ -2,6 +2,7 @@
 // bit of byte 0), read and written as unsigned and two's-complement fields as the ICDs number them.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -10,6 +11,9 @@ namespace giocal::import {
 /// The `len` low bits of `v` read as a two's-complement number (fields that the ICDs split across
 /// pages are put together first, then read with this).
 int32_t twosComplement(uint32_t v, int len);
+
+/// A field's integer times its ICD scale factor 2^exp2.
+inline double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
 
 class BitBuffer {
  public:

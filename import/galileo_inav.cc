@@ -14,8 +14,6 @@ constexpr double kPi = 3.1415926535898;
 // RINEX 3 data source of an I/NAV record: bit 0 (I/NAV E1-B) and bit 9 (clock for E5b/E1).
 constexpr int kInavSource = (1 << 0) | (1 << 9);
 
-double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
-
 // SISA index to metres (Galileo OS SIS ICD 5.1.12); 255 (no prediction) is kept as -1.
 double sisaMetres(int n) {
   if (n <= 49) return 0.01 * n;

@@ -16,8 +16,6 @@ constexpr uint32_t kPreamble = 0x8B;
 // Word w (1-10), bit b (1-24) of IS-GPS-200's numbering, in the packed 24-bit-per-word string.
 constexpr int at(int w, int b) { return 24 * (w - 1) + (b - 1); }
 
-double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
-
 // URA index to metres (IS-GPS-200 20.3.3.3.1.3, the upper bound of each range).
 double uraMetres(int index) {
   static constexpr double kUra[] = {2.4,  3.4,   4.85,  6.85,  9.65,   13.65,  24.0,  48.0,

@@ -16,7 +16,9 @@ TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" \
   "$root/build-tsan/test/test_calibrator_queue"
 echo "thread sanitizer: the CalibratorQueue test ran with no report"
 
-# The negative control, from a copy of the sources (data/ linked, not copied).
+# The negative control, from a copy of the sources (data/ linked, not copied), built in the
+# copy's build-tsan/ as the sources are in theirs: under CI's compiler cache (.ci/run: ccache with
+# the clone as base directory) every object but the changed file's is then the build above's.
 control="$root/build-tsan/control"
 rm -rf "$control"
 mkdir -p "$control/src"
@@ -27,11 +29,11 @@ queue="$control/src/common/online/calibrator_queue.cc"
 sed -i '/^CalibratorHealth CalibratorQueue::health() const {$/{n;d}' "$queue"
 locks=$(grep -c 'lock_guard<std::mutex> lock(snapshot_mutex_)' "$queue")
 [ "$locks" -eq 3 ] || { echo "negative control: expected 3 snapshot locks left, found $locks"; exit 1; }
-cmake -S "$control/src" -B "$control/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+cmake -S "$control/src" -B "$control/src/build-tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DGIOCAL_THREAD_SANITIZE=ON \
   -DGIOCAL_FACTOR_GRAPH=OFF -DGIOCAL_BENCH=OFF -DGIOCAL_EXAMPLES=OFF > /dev/null
-cmake --build "$control/build" --target test_calibrator_queue -j "$(nproc)" > /dev/null
-if TSAN_OPTIONS="halt_on_error=1" "$control/build/test/test_calibrator_queue" \
+cmake --build "$control/src/build-tsan" --target test_calibrator_queue -j "$(nproc)" > /dev/null
+if TSAN_OPTIONS="halt_on_error=1" "$control/src/build-tsan/test/test_calibrator_queue" \
   > "$control/report.txt" 2>&1; then
   echo "negative control: a getter without its lock ran with no report"
   exit 1

@@ -32,6 +32,12 @@ bool number(const std::string& text, double blank, double& out) {
   return end == t.c_str() + t.size() && std::isfinite(out);
 }
 
+std::string headerLine(const std::string& content, const std::string& label) {
+  std::string line = content;
+  line.resize(60, ' ');
+  return line + label + "\n";
+}
+
 bool integer(double v, int min, int max, int& out) {
   if (!std::isfinite(v) || v < min || v > max || v != std::floor(v)) return false;
   out = static_cast<int>(v);

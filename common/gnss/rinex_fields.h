@@ -10,6 +10,8 @@ std::string field(const std::string& line, int col, int width);
 /// The header label, columns 61-80, trimmed.
 std::string label(const std::string& line);
 std::string trim(const std::string& s);
+/// A header line as the writers make it: content in columns 1-60, the label from column 61.
+std::string headerLine(const std::string& content, const std::string& label);
 
 /// A Fortran-style number (D or E exponent). Blank gives `blank`; anything else that is not a
 /// number returns false.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/gnss/rinex_fields.h"
 #include "common/io/atomic_file.h"
 #include "common/time/gps_time.h"
 
@@ -11,17 +12,13 @@ namespace giocal {
 
 namespace {
 
+using rinex::headerLine;
+
 // BDT began at GPS week 1356 and runs 14 s behind GPS time.
 constexpr int kBdtWeekOffset = 1356;
 constexpr double kBdtMinusGps = -14.0;
 // RINEX 3.04 Table A4: transmission time not known.
 constexpr double kUnknownTransmission = 0.9999e9;
-
-std::string headerLine(const std::string& content, const std::string& label) {
-  std::string c = content;
-  c.resize(60, ' ');
-  return c + label + "\n";
-}
 
 std::string d19(double v) {
   char buf[32];

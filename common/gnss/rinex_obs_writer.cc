@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/gnss/rinex_fields.h"
 #include "common/io/atomic_file.h"
 #include "common/time/gps_time.h"
 
@@ -10,11 +11,7 @@ namespace giocal {
 
 namespace {
 
-std::string headerLine(const std::string& content, const std::string& label) {
-  std::string c = content;
-  c.resize(60, ' ');
-  return c + label + "\n";
-}
+using rinex::headerLine;
 
 double valueOf(const SignalObs& s, char type) {
   switch (type) {
