@@ -10,7 +10,7 @@ namespace giocal::import {
 
 namespace {
 
-constexpr uint32_t kPreamble = 0x712;
+constexpr uint32_t kBeidouPreamble = 0x712;
 constexpr double kBdtWeekInGps = 1356.0;  // BDT week 0 began at GPS week 1356
 constexpr double kBdtBehindGps = 14.0;    // GPST - BDT [s]
 
@@ -23,7 +23,7 @@ BitBuffer beidouSubframe(const SatId& sat, const std::vector<uint32_t>& words) {
   }
   BitBuffer sf(300);
   for (int w = 0; w < 10; ++w) sf.put(30 * w, 30, words[static_cast<std::size_t>(w)] & 0x3FFFFFFF);
-  if (sf.u(0, 11) != kPreamble) {
+  if (sf.u(0, 11) != kBeidouPreamble) {
     throw std::runtime_error(sat.str() + " subframe without the BeiDou preamble");
   }
   return sf;

@@ -14,6 +14,8 @@ int32_t twosComplement(uint32_t v, int len);
 
 /// A field's integer times its ICD scale factor 2^exp2.
 inline double scaled(double v, int exp2) { return std::ldexp(v, exp2); }
+/// Semicircles to radians with the value of pi that IS-GPS-200 and the Galileo OS SIS ICD define.
+constexpr double kIcdPi = 3.1415926535898;
 
 class BitBuffer {
  public:

@@ -10,7 +10,6 @@ namespace giocal::import {
 
 namespace {
 
-constexpr double kPi = 3.1415926535898;
 // RINEX 3 data source of an I/NAV record: bit 0 (I/NAV E1-B) and bit 9 (clock for E5b/E1).
 constexpr int kInavSource = (1 << 0) | (1 << 9);
 
@@ -47,17 +46,17 @@ std::optional<Ephemeris> decodeInav(const SatId& sat, const std::array<BitBuffer
   e.iode = iod;
   e.data_source = kInavSource;
   e.toe = gpsSecondsNear(w[0].u(16, 14) * 60.0, t_rx);
-  e.m0 = scaled(w[0].s(30, 32), -31) * kPi;
+  e.m0 = scaled(w[0].s(30, 32), -31) * kIcdPi;
   e.e = scaled(w[0].u(62, 32), -33);
   e.sqrt_a = scaled(w[0].u(94, 32), -19);
 
-  e.omega0 = scaled(w[1].s(16, 32), -31) * kPi;
-  e.i0 = scaled(w[1].s(48, 32), -31) * kPi;
-  e.omega = scaled(w[1].s(80, 32), -31) * kPi;
-  e.idot = scaled(w[1].s(112, 14), -43) * kPi;
+  e.omega0 = scaled(w[1].s(16, 32), -31) * kIcdPi;
+  e.i0 = scaled(w[1].s(48, 32), -31) * kIcdPi;
+  e.omega = scaled(w[1].s(80, 32), -31) * kIcdPi;
+  e.idot = scaled(w[1].s(112, 14), -43) * kIcdPi;
 
-  e.omega_dot = scaled(w[2].s(16, 24), -43) * kPi;
-  e.delta_n = scaled(w[2].s(40, 16), -43) * kPi;
+  e.omega_dot = scaled(w[2].s(16, 24), -43) * kIcdPi;
+  e.delta_n = scaled(w[2].s(40, 16), -43) * kIcdPi;
   e.cuc = scaled(w[2].s(56, 16), -29);
   e.cus = scaled(w[2].s(72, 16), -29);
   e.crc = scaled(w[2].s(88, 16), -5);

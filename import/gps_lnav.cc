@@ -10,8 +10,7 @@ namespace giocal::import {
 
 namespace {
 
-constexpr double kPi = 3.1415926535898;  // the value IS-GPS-200 defines for the semicircle
-constexpr uint32_t kPreamble = 0x8B;
+constexpr uint32_t kLnavPreamble = 0x8B;
 
 // Word w (1-10), bit b (1-24) of IS-GPS-200's numbering, in the packed 24-bit-per-word string.
 constexpr int at(int w, int b) { return 24 * (w - 1) + (b - 1); }
@@ -45,8 +44,8 @@ std::optional<Ephemeris> decodeLnav(const SatId& sat, const BitBuffer& sf1, cons
   e.af0 = scaled(sf1.s(at(10, 1), 22), -31);
 
   e.crs = scaled(sf2.s(at(3, 9), 16), -5);
-  e.delta_n = scaled(sf2.s(at(4, 1), 16), -43) * kPi;
-  e.m0 = scaled(sf2.s2(at(4, 17), 8, at(5, 1), 24), -31) * kPi;
+  e.delta_n = scaled(sf2.s(at(4, 1), 16), -43) * kIcdPi;
+  e.m0 = scaled(sf2.s2(at(4, 17), 8, at(5, 1), 24), -31) * kIcdPi;
   e.cuc = scaled(sf2.s(at(6, 1), 16), -29);
   e.e = scaled(sf2.u2(at(6, 17), 8, at(7, 1), 24), -33);
   e.cus = scaled(sf2.s(at(8, 1), 16), -29);
@@ -54,13 +53,13 @@ std::optional<Ephemeris> decodeLnav(const SatId& sat, const BitBuffer& sf1, cons
   e.toe = gpsSecondsNear(scaled(sf2.u(at(10, 1), 16), 4), t_rx);
 
   e.cic = scaled(sf3.s(at(3, 1), 16), -29);
-  e.omega0 = scaled(sf3.s2(at(3, 17), 8, at(4, 1), 24), -31) * kPi;
+  e.omega0 = scaled(sf3.s2(at(3, 17), 8, at(4, 1), 24), -31) * kIcdPi;
   e.cis = scaled(sf3.s(at(5, 1), 16), -29);
-  e.i0 = scaled(sf3.s2(at(5, 17), 8, at(6, 1), 24), -31) * kPi;
+  e.i0 = scaled(sf3.s2(at(5, 17), 8, at(6, 1), 24), -31) * kIcdPi;
   e.crc = scaled(sf3.s(at(7, 1), 16), -5);
-  e.omega = scaled(sf3.s2(at(7, 17), 8, at(8, 1), 24), -31) * kPi;
-  e.omega_dot = scaled(sf3.s(at(9, 1), 24), -43) * kPi;
-  e.idot = scaled(sf3.s(at(10, 9), 14), -43) * kPi;
+  e.omega = scaled(sf3.s2(at(7, 17), 8, at(8, 1), 24), -31) * kIcdPi;
+  e.omega_dot = scaled(sf3.s(at(9, 1), 24), -43) * kIcdPi;
+  e.idot = scaled(sf3.s(at(10, 9), 14), -43) * kIcdPi;
   return e;
 }
 
@@ -81,7 +80,7 @@ std::optional<Ephemeris> GpsLnavAssembler::add(const SatId& sat, const std::vect
   BitBuffer sf(240);
   for (int w = 0; w < 10; ++w)
     sf.put(24 * w, 24, (words[static_cast<std::size_t>(w)] >> 6) & 0xFFFFFF);
-  if (sf.u(0, 8) != kPreamble) {
+  if (sf.u(0, 8) != kLnavPreamble) {
     throw std::runtime_error(sat.str() + " subframe without the LNAV preamble (CNAV or damage)");
   }
   const int id = static_cast<int>(sf.u(at(2, 20), 3));

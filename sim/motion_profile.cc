@@ -4,11 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/math/rotation.h"
+
 namespace giocal::sim {
 
 namespace {
-
-constexpr double kDeg = 0.017453292519943295;
 
 // Quintic smooth step on [0, 1] and its derivative with respect to u.
 double smooth(double u) { return u * u * u * (10.0 + u * (-15.0 + 6.0 * u)); }
@@ -61,14 +61,14 @@ MotionProfile::MotionProfile(const std::vector<SegmentSpec>& segments) {
         if (s.direction != "left" && s.direction != "right") {
           throw std::invalid_argument("arc direction must be left or right");
         }
-        const double d = s.angle_deg > 0.0 ? s.angle_deg * kDeg / rate + tr / 2.0 : s.duration;
+        const double d = s.angle_deg > 0.0 ? s.angle_deg * kDegToRad / rate + tr / 2.0 : s.duration;
         add(d, tr, speed, sign * rate);
       }
     } else if (s.type == "turn_in_place") {
-      const double rate = s.rate_deg_s * kDeg;
+      const double rate = s.rate_deg_s * kDegToRad;
       if (rate == 0.0) throw std::invalid_argument("turn_in_place needs rate_deg_s != 0");
       const double d =
-          s.angle_deg > 0.0 ? s.angle_deg * kDeg / std::abs(rate) + tr / 2.0 : s.duration;
+          s.angle_deg > 0.0 ? s.angle_deg * kDegToRad / std::abs(rate) + tr / 2.0 : s.duration;
       add(d, tr, 0.0, rate);
     } else {
       throw std::invalid_argument("unknown motion segment type '" + s.type + "'");
