@@ -11,6 +11,7 @@
 #include "apps/import_command.h"
 #include "apps/interrupt_watch.h"
 #include "apps/simulate_command.h"
+#include "common/gnss/rtk_job.h"
 
 namespace po = boost::program_options;
 
@@ -32,7 +33,14 @@ int runSimulateCommand(int argc, char** argv) {
       "nav", po::value<std::vector<std::string>>()->multitoken(),
       "with --trajectory: RINEX navigation file(s)")(
       "knot-spacing", po::value<double>()->default_value(0.0),
-      "with --trajectory: seconds between the fitted path's knots (0: twice the solutions')");
+      "with --trajectory: seconds between the fitted path's knots (0: twice the solutions')")(
+      "static-rover", po::value<std::string>()->default_value(""),
+      "a static receiver's RINEX: its real observations moved along the preset's drive (with "
+      "--rover-pos, --nav and --base, or no base for a rover alone)")(
+      "rover-pos", po::value<std::string>()->default_value(""),
+      "with --static-rover: the receiver's surveyed antenna position, ECEF x,y,z [m]")(
+      "base-pos", po::value<std::string>()->default_value(""),
+      "with --static-rover: the base's surveyed position, ECEF x,y,z [m] (else its header's)");
   const po::variables_map vm = parseCommand(
       argc, argv, opts,
       "giocal simulate: writes a simulated dataset (IMU, odometer, rover and base RINEX, truth) "
@@ -45,6 +53,28 @@ int runSimulateCommand(int argc, char** argv) {
   given.base = vm["base"].as<std::string>();
   if (vm.count("nav")) given.nav = vm["nav"].as<std::vector<std::string>>();
   given.knot_spacing = vm["knot-spacing"].as<double>();
+  const std::string static_rover = vm["static-rover"].as<std::string>();
+  if (!static_rover.empty()) {
+    if (!given.trajectory.empty() || !given.rover.empty() || vm["no-base"].as<bool>()) {
+      throw std::runtime_error(
+          "--static-rover does not go with --trajectory, --rover or --no-base (leave --base out "
+          "for a rover alone)");
+    }
+    if (vm["rover-pos"].as<std::string>().empty())
+      throw std::runtime_error("--static-rover needs --rover-pos (and --nav)");
+    MovedGnss moved;
+    moved.rover = static_rover;
+    moved.base = given.base;
+    moved.nav = given.nav;
+    moved.rover_pos = parseBasePosition(vm["rover-pos"].as<std::string>(), "--rover-pos");
+    if (!vm["base-pos"].as<std::string>().empty())
+      moved.base_pos = parseBasePosition(vm["base-pos"].as<std::string>(), "--base-pos");
+    runSimulateMoved(vm["config"].as<std::string>(), moved, vm["out"].as<std::string>(),
+                     vm["seed"].as<std::uint64_t>(), std::cout, interrupts.stop());
+    return 0;
+  }
+  if (!vm["rover-pos"].as<std::string>().empty() || !vm["base-pos"].as<std::string>().empty())
+    throw std::runtime_error("--rover-pos and --base-pos go with --static-rover");
   if (given.trajectory.empty()) {
     if (!given.rover.empty() || !given.base.empty() || !given.nav.empty()) {
       throw std::runtime_error("--rover, --base and --nav go with --trajectory");

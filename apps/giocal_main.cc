@@ -38,6 +38,8 @@ const char* kUsage =
     "  giocal simulate  --config <yaml> --out <dir> [--seed <n>] [--no-base]\n"
     "  giocal simulate  --config <yaml> --trajectory <file.pos> --rover <obs> [--base <obs>]\n"
     "                   --nav <nav>... --out <dir> [--seed <n>]\n"
+    "  giocal simulate  --config <yaml> --static-rover <obs> --rover-pos x,y,z [--base <obs>\n"
+    "                   [--base-pos x,y,z]] --nav <nav>... --out <dir> [--seed <n>]\n"
     "  giocal rtk       --rover <obs> --base <obs> --nav <nav> [--nav <nav>...] [--base-pos "
     "x,y,z]\n"
     "                   [--config <yaml>] --out <file.pos> [--overwrite]\n"

@@ -6,16 +6,24 @@
 #include <filesystem>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 
 #include "common/geodesy/wgs84.h"
+#include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/pos_reader.h"
+#include "common/gnss/rinex_nav.h"
+#include "common/gnss/rinex_obs.h"
+#include "common/gnss/rinex_obs_writer.h"
 #include "common/io/dataset_description.h"
 #include "common/io/output_set.h"
+#include "common/math/rotation.h"
 #if GIOCAL_FACTOR_GRAPH
 #include "sim/fitted_path.h"
 #endif
+#include "sim/moved_rover.h"
 #include "sim/simulator.h"
+#include "sim/trajectory.h"
 
 namespace giocal {
 
@@ -27,6 +35,26 @@ void refuseDatasetFolder(const std::string& out) {
       throw std::runtime_error(out + ": already holds a dataset (" + f +
                                "); choose an empty folder or remove it first");
     }
+  }
+}
+
+// A copy in the staged dataset that belongs to the user (the source may be read-only).
+void copyInto(OutputSet& outputs, const std::string& from, const std::string& name) {
+  std::filesystem::copy_file(from, outputs.stagedPath(name));
+  std::filesystem::permissions(outputs.stagedPath(name), std::filesystem::perms::owner_write,
+                               std::filesystem::perm_options::add);
+}
+
+std::vector<std::string> navNames(size_t n) {
+  std::vector<std::string> names;
+  for (size_t k = 0; k < n; ++k)
+    names.push_back(k == 0 ? "nav.rnx" : "nav" + std::to_string(k + 1) + ".rnx");
+  return names;
+}
+
+void requireFiles(const std::vector<std::string>& files) {
+  for (const std::string& f : files) {
+    if (!std::filesystem::is_regular_file(f)) throw std::runtime_error(f + ": file missing");
   }
 }
 
@@ -77,9 +105,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   std::vector<std::string> given{gnss.rover};
   if (!gnss.base.empty()) given.push_back(gnss.base);  // without: a rover alone
   given.insert(given.end(), gnss.nav.begin(), gnss.nav.end());
-  for (const std::string& f : given) {
-    if (!std::filesystem::is_regular_file(f)) throw std::runtime_error(f + ": file missing");
-  }
+  requireFiles(given);
   // Fixed and float solutions; single points are metres off a vehicle's path.
   std::vector<PositionFix> fixes;
   long left_out = 0;
@@ -120,22 +146,14 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   sim::SimulatedLogs logs = sim::simulateMotionSensors(cfg, path, frame, t0, seed);
   checkStop(stop);
   DatasetDescription& d = logs.description;
-  d.nav.clear();
-  for (size_t k = 0; k < gnss.nav.size(); ++k) {
-    d.nav.push_back(k == 0 ? "nav.rnx" : "nav" + std::to_string(k + 1) + ".rnx");
-  }
+  d.nav = navNames(gnss.nav.size());
   if (gnss.base.empty()) d.base_obs.clear();  // a rover alone
   OutputSet outputs(out);
   outputs.stagedPath("dataset.yaml", true);
   sim::writeDataset(logs, outputs.staging());
-  const auto copy = [&](const std::string& from, const std::string& name) {
-    std::filesystem::copy_file(from, outputs.stagedPath(name));
-    std::filesystem::permissions(outputs.stagedPath(name), std::filesystem::perms::owner_write,
-                                 std::filesystem::perm_options::add);
-  };
-  copy(gnss.rover, d.rover_obs);
-  if (!gnss.base.empty()) copy(gnss.base, d.base_obs);
-  for (size_t k = 0; k < gnss.nav.size(); ++k) copy(gnss.nav[k], d.nav[k]);
+  copyInto(outputs, gnss.rover, d.rover_obs);
+  if (!gnss.base.empty()) copyInto(outputs, gnss.base, d.base_obs);
+  for (size_t k = 0; k < gnss.nav.size(); ++k) copyInto(outputs, gnss.nav[k], d.nav[k]);
   checkStop(stop);
   outputs.commit();
   const double wall =
@@ -155,6 +173,80 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
            "noise (a solution with jumps, or motion a ground vehicle cannot make)\n";
   }
 #endif
+}
+
+void runSimulateMoved(const std::string& config, const MovedGnss& gnss, const std::string& out,
+                      std::uint64_t seed, std::ostream& log, const StopRequest* stop) {
+  const sim::SimConfig cfg = sim::readSimConfig(config);
+  refuseDatasetFolder(out);
+  if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
+  std::vector<std::string> given{gnss.rover};
+  if (!gnss.base.empty()) given.push_back(gnss.base);  // without: a rover alone
+  given.insert(given.end(), gnss.nav.begin(), gnss.nav.end());
+  requireFiles(given);
+  const auto start = std::chrono::steady_clock::now();
+  const ObsData rover = readRinexObs(gnss.rover);
+  for (const std::string& w : rover.warnings)
+    log << "  warning: " << gnss.rover << ": " << w << "\n";
+  std::vector<NavData> parts;
+  for (const std::string& f : gnss.nav) parts.push_back(readRinexNav(f));
+  const BroadcastOrbits orbits(mergeNav(parts));
+  const sim::Trajectory drive(sim::MotionProfile(cfg.segments), cfg.terrain,
+                              Eigen::Vector3d::Zero(), cfg.initial_heading_deg * kDegToRad);
+  if (rover.epochs.size() < 2) throw std::runtime_error(gnss.rover + ": fewer than 2 epochs");
+  const double t0 = std::ceil(rover.epochs.front().t - 1e-6);
+  const double covered = rover.epochs.back().t - t0;
+  if (covered < drive.duration()) {
+    std::ostringstream msg;
+    msg << gnss.rover << ": " << covered << " s of observations from its first whole second, "
+        << "and the preset's drive takes " << drive.duration() << " s";
+    throw std::runtime_error(msg.str());
+  }
+  const LocalFrame frame(gnss.rover_pos);
+  sim::SimulatedLogs logs = sim::simulateMotionSensors(cfg, drive, frame, t0, seed);
+  checkStop(stop);
+  const sim::MovedRover moved =
+      sim::moveStaticRover(rover.epochs, orbits, gnss.rover_pos,
+                           sim::antennaPath(cfg, drive, frame, t0), t0, t0 + drive.duration());
+  checkStop(stop);
+  DatasetDescription& d = logs.description;
+  d.nav = navNames(gnss.nav.size());
+  if (gnss.base.empty()) d.base_obs.clear();  // a rover alone
+  d.base_position_ecef = gnss.base_pos;
+  OutputSet outputs(out);
+  outputs.stagedPath("dataset.yaml", true);
+  sim::writeDataset(logs, outputs.staging());
+  RinexObsHeader h;
+  h.program = "giocal simulate";
+  h.marker = rover.header.marker.empty() ? "ROVER" : rover.header.marker;
+  h.receiver = "REAL, MOVED";
+  h.antenna = "REAL";
+  Eigen::Vector3d v;
+  sim::antennaPath(cfg, drive, frame, t0)(t0, h.approx_position, v);
+  h.interval = rover.header.interval;
+  // The codes of the signals moved (a system or band without a carrier frequency is left out).
+  for (const auto& [sys, codes] : rover.header.obs_types) {
+    for (const std::string& c : codes) {
+      if (c.size() == 3 && carrierFrequency(static_cast<GnssSystem>(sys), c[1]) > 0.0)
+        h.obs_types[sys].push_back(c);
+    }
+  }
+  writeRinexObs(outputs.stagedPath(d.rover_obs), h, moved.epochs);
+  if (!gnss.base.empty()) copyInto(outputs, gnss.base, d.base_obs);
+  for (size_t k = 0; k < gnss.nav.size(); ++k) copyInto(outputs, gnss.nav[k], d.nav[k]);
+  checkStop(stop);
+  outputs.commit();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  log << std::fixed << std::setprecision(3) << "simulated '" << cfg.name
+      << "' motion sensors (seed " << seed << ") and moved " << gnss.rover
+      << " along the drive: " << drive.duration() << " s from its first whole second, "
+      << moved.epochs.size() << " epochs, " << moved.signals
+      << " signals moved (ranges changed by up to " << moved.max_move << " m), "
+      << moved.unsupported_signals
+      << " signals of systems or bands without a carrier frequency and " << moved.no_ephemeris
+      << " satellite epochs without an ephemeris left out; " << wall << " s -> " << out << "\n";
+  log.unsetf(std::ios::fixed);
 }
 
 }  // namespace giocal

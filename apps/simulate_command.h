@@ -1,10 +1,13 @@
 // `giocal simulate --config <yaml> --out <dir> [--seed <n>]`, and with `--trajectory <file.pos>
 // --rover <obs> --base <obs> --nav <nav>...`: real GNSS files with the motion sensors synthesized
-// along the vehicle path of their position solution.
+// along the vehicle path of their position solution; with `--static-rover <obs> --rover-pos x,y,z`:
+// a static receiver's real observations moved along the preset's drive.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +29,18 @@ struct GivenGnss {
   double knot_spacing = 0.0;  // of the fitted path's splines [s]; 0: twice the solutions' interval
 };
 void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const std::string& out,
+                      std::uint64_t seed, std::ostream& log, const StopRequest* stop = nullptr);
+
+/// A static receiver's real RINEX moved along the preset's drive (sim/moved_rover.h): the drive
+/// starts at the rover file's first whole second, its IMU frame beside `rover_pos` (the receiver's
+/// surveyed ECEF position), and the base and navigation files are copied as they are.
+struct MovedGnss {
+  std::string rover, base;
+  Eigen::Vector3d rover_pos = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> base_pos;  // written as gnss.base_position_ecef
+  std::vector<std::string> nav;
+};
+void runSimulateMoved(const std::string& config, const MovedGnss& gnss, const std::string& out,
                       std::uint64_t seed, std::ostream& log, const StopRequest* stop = nullptr);
 
 }  // namespace giocal

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "common/geodesy/wgs84.h"
-#include "common/math/so3.h"
+#include "sim/sky_geometry.h"
 
 namespace giocal::sim {
 
@@ -16,13 +16,6 @@ constexpr double kEarthRadius = 6371e3, kIonoHeight = 350e3;
 double gauss(std::mt19937_64& rng, double sd) {
   std::normal_distribution<double> n(0.0, 1.0);
   return n(rng) * sd;
-}
-
-// Simulator troposphere: exponential zenith delays and a continued-fraction-free mapping function
-// (1.001 / sqrt(0.002001 + sin^2 el)).
-double troposphere(double h, double el, double zwd) {
-  const double zhd = 2.3 * std::exp(-h / 7000.0);
-  return (zhd + zwd) * 1.001 / std::sqrt(0.002001 + std::sin(el) * std::sin(el));
 }
 
 // Simulator ionosphere: single layer at 350 km, delay on L1 for a vertical TEC [TECU].
@@ -37,44 +30,11 @@ struct Receiver {
   double zwd;           // zenith wet delay [m]
 };
 
-struct Geometry {
-  double range, range_rate, clock, clock_drift, el, az;
-  Eigen::Vector3d u;  // line of sight, receiver to satellite (ECEF)
-};
-
 // A satellite's broadcast errors: where and when it truly is against its ephemeris.
 struct BroadcastError {
   Eigen::Vector3d orbit = Eigen::Vector3d::Zero(), orbit_rate = Eigen::Vector3d::Zero();
   double clock_m = 0.0;
 };
-
-// Exact light-time solution: transmission time, Sagnac rotation by the flight time.
-bool geometry(const BroadcastOrbits& orbits, const SatId& sat, double t_rx,
-              const Eigen::Vector3d& p, const Eigen::Vector3d& v, char band, Geometry& g) {
-  const Ephemeris* eph = orbits.select(sat, t_rx);
-  if (!eph) return false;
-  double tau = 0.075;
-  SatelliteState s;
-  Eigen::Vector3d ps, vs;
-  for (int i = 0; i < 4; ++i) {
-    s = satelliteState(*eph, t_rx - tau);
-    const Eigen::Matrix3d R = expSO3(Eigen::Vector3d(0, 0, -wgs84::kOmegaEarth * tau));
-    ps = R * s.p_e;
-    vs = R * s.v_e;
-    tau = (ps - p).norm() / kSpeedOfLight;
-  }
-  const Eigen::Vector3d u = (ps - p) / (ps - p).norm();
-  g.u = u;
-  g.range = (ps - p).norm();
-  g.range_rate = u.dot(vs - v);
-  g.clock = s.clock - groupDelay(*eph, band);
-  g.clock_drift = s.clock_drift;
-  const Geodetic geo = geodeticFromEcef(p);
-  const Eigen::Vector3d los = rotationEcefFromEnu(geo.lat, geo.lon).transpose() * u;
-  g.el = std::asin(los.z());
-  g.az = std::atan2(los.x(), los.y());
-  return true;
-}
 
 // BeiDou MEO satellites by PRN (BDS-2 C11, C12, C14; BDS-3 C19-C30, C32-C37, C41-C46).
 bool isBeidouMeo(const SatId& sat) {
@@ -114,11 +74,11 @@ SceneSpec sceneDefaults(const std::string& type) {
 }
 
 void setSingleReceiverDefaults(GnssSimSpec& spec) {
-  spec.orbit_error_m = 0.5;             // broadcast SISRE of GPS and Galileo: decimetres to 1 m
-  spec.orbit_error_rate = 2e-4;         // about 0.7 m per hour
+  spec.orbit_error_m = 0.5;      // broadcast SISRE of GPS and Galileo: decimetres to 1 m
+  spec.orbit_error_rate = 2e-4;  // about 0.7 m per hour
   spec.sat_clock_error_m = 0.5;
-  spec.sat_clock_random_walk = 1e-4;    // 0.1 mm in 1 s, 0.5 mm in 30 s
-  spec.vtec_random_walk = 0.002;        // 0.3 mm on L1 in 1 s, 0.12 TECU in an hour
+  spec.sat_clock_random_walk = 1e-4;     // 0.1 mm in 1 s, 0.5 mm in 30 s
+  spec.vtec_random_walk = 0.002;         // 0.3 mm on L1 in 1 s, 0.12 TECU in an hour
   spec.zenith_wet_random_walk = 1.7e-4;  // 1 cm per sqrt(hour)
   spec.clock_step_s = 1e-3;
   spec.clock_offset_sd = 2e-4;
@@ -242,8 +202,7 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           const BroadcastError& be = broadcast[sat];
           const double since = t_true - t0;
           const double broadcast_m = g.u.dot(be.orbit + be.orbit_rate * since) + be.clock_m;
-          const double common =
-              g.range + broadcast_m + kSpeedOfLight * (rc.clock - g.clock) + trop;
+          const double common = g.range + broadcast_m + kSpeedOfLight * (rc.clock - g.clock) + trop;
           const auto key = std::make_tuple(r, sat, band);
           if (!out.ambiguity.count(key)) out.ambiguity[key] = amb(rng);
           SignalObs s;

@@ -57,16 +57,16 @@ struct GnssSimSpec {
   // gnss.base: none: a rover alone, no base receiver written. Then what a single receiver meets
   // and a base would cancel is on by default (gnss_sim_config's defaults; 0 turns one off):
   bool base = true;
-  double orbit_error_m = 0.0;            // broadcast orbit error per axis, 1-sigma [m]
-  double orbit_error_rate = 0.0;         // its change, 1-sigma per axis [m/s]
-  double sat_clock_error_m = 0.0;        // broadcast satellite clock error, 1-sigma [m]
-  double sat_clock_random_walk = 0.0;    // its random walk [m/sqrt(s)]
-  double vtec_random_walk = 0.0;         // vertical TEC random walk [TECU/sqrt(s)]
-  double zenith_wet_random_walk = 0.0;   // zenith wet delay random walk [m/sqrt(s)]
-  double clock_step_s = 0.0;             // the receiver steps its clock by this when it is
-                                         // half of it off (u-blox: 1 ms) [s]
-  double half_cycle_share = 0.0;         // share of the scenes' slips that are half cycles,
-                                         // flagged LLI bit 1 at the epoch
+  double orbit_error_m = 0.0;           // broadcast orbit error per axis, 1-sigma [m]
+  double orbit_error_rate = 0.0;        // its change, 1-sigma per axis [m/s]
+  double sat_clock_error_m = 0.0;       // broadcast satellite clock error, 1-sigma [m]
+  double sat_clock_random_walk = 0.0;   // its random walk [m/sqrt(s)]
+  double vtec_random_walk = 0.0;        // vertical TEC random walk [TECU/sqrt(s)]
+  double zenith_wet_random_walk = 0.0;  // zenith wet delay random walk [m/sqrt(s)]
+  double clock_step_s = 0.0;            // the receiver steps its clock by this when it is
+                                        // half of it off (u-blox: 1 ms) [s]
+  double half_cycle_share = 0.0;        // share of the scenes' slips that are half cycles,
+                                        // flagged LLI bit 1 at the epoch
 };
 
 /// What a rover alone meets (gnss.base: none): broadcast orbit and clock errors, ionosphere,

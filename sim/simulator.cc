@@ -147,6 +147,23 @@ SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& 
   return out;
 }
 
+AntennaTruth antennaPath(const SimConfig& config, const VehiclePath& path, const LocalFrame& frame,
+                         double t0) {
+  const Eigen::Matrix3d R_b_m = config.truth.q_b_m.toRotationMatrix();
+  const Eigen::Matrix3d R_m_b = R_b_m.transpose();
+  const Eigen::Vector3d p_m_b = -R_m_b * config.truth.p_b_m;
+  // Antenna at the lever arm p_b_g: p_g = p_b + R_n_b p_b_g, v_g = v_b + R_n_b (w_b x p_b_g).
+  return [&path, frame, t0, R_b_m, R_m_b, p_m_b, p_b_g = config.p_b_g](
+             double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e) {
+    const VehicleKinematics m = path.at(t - t0);
+    const NavState s = imuState(m, R_m_b, p_m_b, nullptr);
+    const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
+    const Eigen::Vector3d w_b = R_b_m * m.w_m;
+    p_e = frame.ecefFromEnu(s.p_n_b + R_n_b * p_b_g);
+    v_e = frame.R_e_n() * (s.v_n_b + R_n_b * w_b.cross(p_b_g));
+  };
+}
+
 SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   const double t0 = parseGpsTime(config.start_time);
   const Eigen::Vector3d origin_e = ecefFromGeodetic(
@@ -155,20 +172,8 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed) {
   const Trajectory traj(MotionProfile(config.segments), config.terrain, Eigen::Vector3d::Zero(),
                         config.initial_heading_deg * kDegToRad);
   SimulatedLogs out = simulateMotionSensors(config, traj, frame, t0, seed);
-  const OdometerCalibration& truth = config.truth;
-  const Eigen::Matrix3d R_b_m = truth.q_b_m.toRotationMatrix();
-  const Eigen::Matrix3d R_m_b = R_b_m.transpose();
-  const Eigen::Vector3d p_m_b = -R_m_b * truth.p_b_m;
   if (config.gnss.enabled) {
-    // Antenna at the lever arm p_b_g: p_g = p_b + R_n_b p_b_g, v_g = v_b + R_n_b (w_b x p_b_g).
-    const auto antenna = [&](double t, Eigen::Vector3d& p_e, Eigen::Vector3d& v_e) {
-      const VehicleKinematics m = traj.at(t - t0);
-      const NavState s = imuState(m, R_m_b, p_m_b, nullptr);
-      const Eigen::Matrix3d R_n_b = s.q_n_b.toRotationMatrix();
-      const Eigen::Vector3d w_b = R_b_m * m.w_m;
-      p_e = frame.ecefFromEnu(s.p_n_b + R_n_b * config.p_b_g);
-      v_e = frame.R_e_n() * (s.v_n_b + R_n_b * w_b.cross(config.p_b_g));
-    };
+    const AntennaTruth antenna = antennaPath(config, traj, frame, t0);
     const BroadcastOrbits orbits(readRinexNav(config.gnss.nav_file));
     const Eigen::Vector3d base_e = frame.ecefFromEnu(config.gnss.base_offset_enu);
     std::mt19937_64 rng_gnss(seed * 4 + 4);

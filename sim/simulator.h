@@ -45,6 +45,11 @@ SimulatedLogs simulate(const SimConfig& config, std::uint64_t seed);
 SimulatedLogs simulateMotionSensors(const SimConfig& config, const VehiclePath& path,
                                     const LocalFrame& frame, double t0, std::uint64_t seed);
 
+/// The true antenna (at the config's p_b_g) of a vehicle driving `path` from GPS time t0, in ECEF;
+/// `path` must outlive the function.
+AntennaTruth antennaPath(const SimConfig& config, const VehiclePath& path, const LocalFrame& frame,
+                         double t0);
+
 /// Writes imu.csv, odom.csv, truth.csv, dataset.yaml, truth_calib.yaml and, with scenes,
 /// scenes.csv (t_start,t_end,type) into `folder` (created if missing); each file atomically.
 void writeDataset(const SimulatedLogs& logs, const std::string& folder);

@@ -29,6 +29,8 @@ set(GIOCAL_SLOW_TESTS
   I2navImport.ASimulatedDriveRoundTripsAndCalibratesWithItsSpeedOnlyOdometer
   LooselyCoupled.BothEstimatorsCalibrateFromRtkPositionsThroughTheLeverArm
   LooselyCoupled.BothEstimatorsAreConsistentOverTenSeeds
+  RealMovedRover.MosaicRoverMovedAlongTwoFieldLapsFixesAndCalibrates
+  RealMovedRover.TheSameRoverAloneCalibratesFromItsTimeDifferencedPhase
 )
 set(GIOCAL_REAL_TESTS
   Tdcp.TheRowsGradientsAreTheNumericOnes
@@ -46,6 +48,8 @@ set(GIOCAL_REAL_TESTS
   CycleSlip.FewFalseAlarmsOnRealDataAndInjectedSlipsAreFound
   Ephemeris.VelocityAndClockDriftAreTheDerivativesOfPositionAndClock
   PosFile.ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances
+  RealMovedRover.MosaicRoverMovedAlongTwoFieldLapsFixesAndCalibrates
+  RealMovedRover.TheSameRoverAloneCalibratesFromItsTimeDifferencedPhase
   RealHusky.AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed
   RealHusky.DefaultsWeighTheWanderingHeightsByWhatTheDriveShows
   RealHusky.HeightsLeftOutByHandAreNotChecked

@@ -11,7 +11,7 @@
 
 namespace giocal {
 
-Eigen::Vector3d parseBasePosition(const std::string& text) {
+Eigen::Vector3d parseBasePosition(const std::string& text, const std::string& flag) {
   std::stringstream ss(text);
   std::string part;
   std::vector<double> v;
@@ -19,13 +19,13 @@ Eigen::Vector3d parseBasePosition(const std::string& text) {
     char* end = nullptr;
     const double x = std::strtod(part.c_str(), &end);
     if (part.empty() || *end != '\0')
-      throw std::invalid_argument("--base-pos: '" + text + "' is not x,y,z");
+      throw std::invalid_argument(flag + ": '" + text + "' is not x,y,z");
     v.push_back(x);
   }
   const Eigen::Vector3d p =
       v.size() == 3 ? Eigen::Vector3d(v[0], v[1], v[2]) : Eigen::Vector3d::Zero();
   if (v.size() != 3 || p.norm() < 6.0e6 || p.norm() > 6.5e6) {
-    throw std::invalid_argument("--base-pos: '" + text +
+    throw std::invalid_argument(flag + ": '" + text +
                                 "' is not an ECEF x,y,z near the Earth's surface");
   }
   return p;

@@ -28,7 +28,7 @@ struct RtkSummary {
 
 RtkSummary runRtk(const RtkJob& job, std::vector<RtkSolution>* solutions = nullptr);
 
-/// Parses "x,y,z" (metres, ECEF); throws std::invalid_argument.
-Eigen::Vector3d parseBasePosition(const std::string& text);
+/// Parses "x,y,z" (metres, ECEF) given with `flag`; throws std::invalid_argument naming it.
+Eigen::Vector3d parseBasePosition(const std::string& text, const std::string& flag = "--base-pos");
 
 }  // namespace giocal

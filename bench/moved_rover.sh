@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Real GNSS on a moving antenna: the mosaic pair's static rover (data/real/mosaic-static-nagoya)
+# moved along two laps of the field preset (`simulate --static-rover`, 261 s), the preset's IMU
+# and odometer drawn per seed. For each seed: giocal rtk's fixes against the true antenna, then
+# both calibrators with the base (fix rate, errors) and with the rover alone (--gnss single).
+# The GNSS is the same real file for every seed; the seeds change the motion sensors' errors and
+# the initial guess. Prints one row per seed and run, then the mean |error| per state and run.
+# Usage: bench/moved_rover.sh [first seed, default 9101] [seeds, default 6]
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+first="${1:-9101}"
+count="${2:-6}"
+giocal="${GIOCAL:-$root/build/apps/giocal}"
+[ -x "$giocal" ] || { echo "build first: bash scripts/setup.sh"; exit 1; }
+work="$(mktemp -d /tmp/giocal_moved_rover.XXXXXX)"
+trap 'rm -rf "$work"' EXIT
+m="$root/data/real/mosaic-static-nagoya"
+ecef() {  # "lat lon h" of a survey file as ECEF x,y,z (WGS 84)
+  python3 -c "
+import math,sys
+lat,lon,h=(float(x) for x in open(sys.argv[1]).read().split()[:3])
+a=6378137.0; f=1/298.257223563; e2=f*(2-f); la,lo=math.radians(lat),math.radians(lon)
+n=a/math.sqrt(1-e2*math.sin(la)**2)
+print('%.4f,%.4f,%.4f'%((n+h)*math.cos(la)*math.cos(lo),(n+h)*math.cos(la)*math.sin(lo),(n*(1-e2)+h)*math.sin(la)))" "$1"
+}
+rover_pos="$(ecef "$m/rover_position.txt")"
+base_pos="$(ecef "$m/base_position.txt")"
+sed -e 's/^  laps: 10/  laps: 2/' -e "s|\.\./\.\./data/|$root/data/|" "$root/config/sim/field.yaml" \
+  > "$work/field_2_laps.yaml"
+rows="$work/rows.txt"
+: > "$rows"
+printf '%-6s %-12s %6s %9s %9s %8s %8s %8s %8s %8s %6s\n' seed run fix s_v s_w x_m y_m roll_deg \
+  pitch_deg yaw_deg nees7
+for seed in $(seq "$first" $((first + count - 1))); do
+  for scheme in base alone; do
+    d="$work/$scheme$seed"
+    extra=""
+    [ "$scheme" = base ] && extra="--base $m/base.obs --base-pos $base_pos"
+    # shellcheck disable=SC2086
+    "$giocal" simulate --config "$work/field_2_laps.yaml" --seed "$seed" --static-rover \
+      "$m/rover.obs" --rover-pos "$rover_pos" $extra --nav "$m/base.nav" --out "$d" > /dev/null
+    if [ "$scheme" = base ]; then
+      "$giocal" rtk --rover "$d/rover.obs" --base "$d/base.obs" --nav "$d/nav.rnx" \
+        --base-pos "$base_pos" --out "$d/rtk.pos" | sed "s/^/  seed $seed: /"
+    fi
+    for e in ekf fgo; do
+      "$giocal" calibrate --data "$d" --estimator "$e" --no-validate --quiet --out "$d/$e" \
+        > /dev/null || true
+      python3 - "$d/$e/summary.json" "$seed" "$scheme-$e" >> "$rows" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1])); e = s["error"]
+print(sys.argv[2], sys.argv[3], s["status"].split(":")[0], s["fix_rate"], e["s_v"], e["s_w"],
+      e["p_b_m"][0], e["p_b_m"][1], *e["rpy_b_m_deg"], e["nees7"])
+PY
+      tail -1 "$rows" | awk '{printf "%-6s %-12s %6.3f %9.5f %9.5f %8.4f %8.4f %8.3f %8.3f %8.3f %6.1f%s\n",
+        $1, $2, $4, $5, $6, $7, $8, $9, $10, $11, $12, ($3 == "ok" ? "" : "  " $3)}'
+    done
+  done
+done
+echo "mean |error| over seeds $first-$((first + count - 1)):"
+awk '{n[$2]++; for (i = 5; i <= 11; i++) a[$2, i] += ($i < 0 ? -$i : $i); f[$2] += $4; q[$2] += $12}
+  END {for (r in n) printf "%-12s fix %.3f s_v %.5f s_w %.5f x %.4f y %.4f roll %.3f pitch %.3f yaw %.3f nees7 %.1f\n",
+    r, f[r] / n[r], a[r, 5] / n[r], a[r, 6] / n[r], a[r, 7] / n[r], a[r, 8] / n[r], a[r, 9] / n[r],
+    a[r, 10] / n[r], a[r, 11] / n[r], q[r] / n[r]}' "$rows" | sort
