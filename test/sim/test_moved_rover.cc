@@ -23,6 +23,7 @@ TEST(MovedRover, AStaticReceiverMovedAlongAPathIsWhatThatPathReceives) {
   spec.code_sigma = spec.phase_sigma = spec.doppler_sigma = 0.0;
   spec.zenith_wet_sd = 0.0;  // the move's troposphere assumes the simulator's 0.1 m wet delay
   spec.vtec_gradient = 0.0;  // the move leaves the ionosphere as it was
+  spec.clock_offset_sd = 5e-3;  // a receiver whose tags run 5 ms off, as the GSI pair's do
   const BroadcastOrbits orbits(readRinexNav(spec.nav_file));
   const Eigen::Vector3d p_static =
       ecefFromGeodetic({cfg.origin_lat_deg * kDegToRad, cfg.origin_lon_deg * kDegToRad, 60.0});
