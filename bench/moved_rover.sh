@@ -3,9 +3,11 @@
 # moved along two laps of the field preset (`simulate --static-rover`, 261 s), the preset's IMU
 # and odometer drawn per seed. For each seed: giocal rtk's fixes against the true antenna, then
 # both calibrators with the base (fix rate, errors) and with the rover alone (--gnss single).
+# PAIR=gsi instead moves the GSI pair's rover (two Trimble 5700, 3.3 km, GPS every 30 s) along
+# the whole field drive (1244 s), with the base only (30 s is too long for TDCP pairs).
 # The GNSS is the same real file for every seed; the seeds change the motion sensors' errors and
 # the initial guess. Prints one row per seed and run, then the mean |error| per state and run.
-# Usage: bench/moved_rover.sh [first seed, default 9101] [seeds, default 6]
+# Usage: [PAIR=mosaic|gsi] bench/moved_rover.sh [first seed, default 9101] [seeds, default 6]
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-9101}"
@@ -14,7 +16,6 @@ giocal="${GIOCAL:-$root/build/apps/giocal}"
 [ -x "$giocal" ] || { echo "build first: bash scripts/setup.sh"; exit 1; }
 work="$(mktemp -d /tmp/giocal_moved_rover.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
-m="$root/data/real/mosaic-static-nagoya"
 ecef() {  # "lat lon h" of a survey file as ECEF x,y,z (WGS 84)
   python3 -c "
 import math,sys
@@ -23,22 +24,33 @@ a=6378137.0; f=1/298.257223563; e2=f*(2-f); la,lo=math.radians(lat),math.radians
 n=a/math.sqrt(1-e2*math.sin(la)**2)
 print('%.4f,%.4f,%.4f'%((n+h)*math.cos(la)*math.cos(lo),(n+h)*math.cos(la)*math.sin(lo),(n*(1-e2)+h)*math.sin(la)))" "$1"
 }
-rover_pos="$(ecef "$m/rover_position.txt")"
-base_pos="$(ecef "$m/base_position.txt")"
-sed -e 's/^  laps: 10/  laps: 2/' -e "s|\.\./\.\./data/|$root/data/|" "$root/config/sim/field.yaml" \
-  > "$work/field_2_laps.yaml"
+if [ "${PAIR:-mosaic}" = gsi ]; then
+  m="$root/data/real/gsi-static-0759-3040"
+  rover="$m/07590920.05o" base="$m/30400920.05o" navs="$m/30400920.05n $m/07590920.05n"
+  # The base as RTKLIB's test makefile states it (SOURCE.txt), the rover as the mean of RTKLIB's
+  # fixed solution of the pair (rtklib_reference.pos).
+  rover_pos="-3976219.1875,3382371.6044,3652511.1414" base_pos="-3978241.958,3382840.234,3649900.853"
+  laps=10 schemes=base
+else
+  m="$root/data/real/mosaic-static-nagoya"
+  rover="$m/rover.obs" base="$m/base.obs" navs="$m/base.nav"
+  rover_pos="$(ecef "$m/rover_position.txt")" base_pos="$(ecef "$m/base_position.txt")"
+  laps=2 schemes="base alone"
+fi
+sed -e "s/^  laps: 10/  laps: $laps/" -e "s|\.\./\.\./data/|$root/data/|" "$root/config/sim/field.yaml" \
+  > "$work/field_laps.yaml"
 rows="$work/rows.txt"
 : > "$rows"
 printf '%-6s %-12s %6s %9s %9s %8s %8s %8s %8s %8s %6s\n' seed run fix s_v s_w x_m y_m roll_deg \
   pitch_deg yaw_deg nees7
 for seed in $(seq "$first" $((first + count - 1))); do
-  for scheme in base alone; do
+  for scheme in $schemes; do
     d="$work/$scheme$seed"
     extra=""
-    [ "$scheme" = base ] && extra="--base $m/base.obs --base-pos $base_pos"
+    [ "$scheme" = base ] && extra="--base $base --base-pos $base_pos"
     # shellcheck disable=SC2086
-    "$giocal" simulate --config "$work/field_2_laps.yaml" --seed "$seed" --static-rover \
-      "$m/rover.obs" --rover-pos "$rover_pos" $extra --nav "$m/base.nav" --out "$d" > /dev/null
+    "$giocal" simulate --config "$work/field_laps.yaml" --seed "$seed" --static-rover \
+      "$rover" --rover-pos "$rover_pos" $extra --nav $navs --out "$d" > /dev/null
     if [ "$scheme" = base ]; then
       "$giocal" rtk --rover "$d/rover.obs" --base "$d/base.obs" --nav "$d/nav.rnx" \
         --base-pos "$base_pos" --out "$d/rtk.pos" | sed "s/^/  seed $seed: /"

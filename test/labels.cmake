@@ -31,6 +31,7 @@ set(GIOCAL_SLOW_TESTS
   LooselyCoupled.BothEstimatorsAreConsistentOverTenSeeds
   RealMovedRover.MosaicRoverMovedAlongTwoFieldLapsFixesAndCalibrates
   RealMovedRover.TheSameRoverAloneCalibratesFromItsTimeDifferencedPhase
+  RealMovedRover.GsiTrimbleRoverMovedAlongTheFieldDriveFixesAndCalibrates
 )
 set(GIOCAL_REAL_TESTS
   Tdcp.TheRowsGradientsAreTheNumericOnes
@@ -50,6 +51,7 @@ set(GIOCAL_REAL_TESTS
   PosFile.ReadsRtklibsAndItsOwnSolutionsWithTheirCovariances
   RealMovedRover.MosaicRoverMovedAlongTwoFieldLapsFixesAndCalibrates
   RealMovedRover.TheSameRoverAloneCalibratesFromItsTimeDifferencedPhase
+  RealMovedRover.GsiTrimbleRoverMovedAlongTheFieldDriveFixesAndCalibrates
   RealHusky.AnOdometerDelayStateThatDisagreesWithTheYawRatesIsNamed
   RealHusky.DefaultsWeighTheWanderingHeightsByWhatTheDriveShows
   RealHusky.HeightsLeftOutByHandAreNotChecked
