@@ -31,6 +31,7 @@ set(GIOCAL_SLOW_TESTS
   LooselyCoupled.BothEstimatorsAreConsistentOverTenSeeds
   RealMovedRover.MosaicRoverMovedAlongTwoFieldLapsFixesAndCalibrates
   RealMovedRover.TheSameRoverAloneCalibratesFromItsTimeDifferencedPhase
+  SparseGnss.AFloatFirstEpochIsNotHeldAsFixed
   RealMovedRover.GsiTrimbleRoverMovedAlongTheFieldDriveFixesAndCalibrates
 )
 set(GIOCAL_REAL_TESTS

@@ -19,7 +19,8 @@ namespace {
 struct AntennaFix {
   double t = 0.0;
   Eigen::Vector3d p_e = Eigen::Vector3d::Zero();
-  double sd_h = 0.0;  // horizontal 1-sigma [m]
+  double sd_h = 0.0;                                // horizontal 1-sigma [m]
+  Eigen::Matrix3d cov_n = Eigen::Matrix3d::Zero();  // RTK: the solution's covariance in n [m^2]
 };
 
 /// The first run of odometer samples from t_from on with the wheels still, [t0, t1]: the mean
@@ -148,7 +149,7 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
       const RtkSolution sol = rc.solutions[solved++];
       if (sol.quality != 1 && sol.quality != 2) continue;
       const Eigen::Matrix3d cov_n = base_frame.R_e_n().transpose() * sol.cov_e * base_frame.R_e_n();
-      fix = {e.t, sol.p_e, std::sqrt(0.5 * (cov_n(0, 0) + cov_n(1, 1)))};
+      fix = {e.t, sol.p_e, std::sqrt(0.5 * (cov_n(0, 0) + cov_n(1, 1))), cov_n};
     }
     ++good_epochs;
     // The anchor is the last good epoch inside the static window (or the first one in motion).
@@ -263,13 +264,24 @@ std::optional<InitialState> findInitialState(const CalibrationInputs& in,
                               ? std::max(at_state.sd_h, options.single.position_sigma_min_m)
                               : at_state.sd_h;
     const double sd_pos = std::hypot(sd_abs, lever_sd) + 0.01;
+    // An RTK anchor's own covariance, its height's and its correlations too: a float solution's
+    // height sigma is several times its horizontal one. With the horizontal one alone, a first
+    // float 1.58 m up (2.3 of its own height sigmas) lay at 6 of the prior's, and the EKF held
+    // integers that fit it (GNSS every 30 s; ctest -R SparseGnss). The LC and single-receiver
+    // schemes keep the horizontal sigma on all three axes, as before: their own solutions' heights,
+    // not RTK's.
+    const Eigen::Matrix3d P_pos =
+        options.single_receiver || options.loosely_coupled
+            ? Eigen::Matrix3d(Eigen::Matrix3d::Identity() * sd_pos * sd_pos)
+            : Eigen::Matrix3d(at_state.cov_n +
+                              Eigen::Matrix3d::Identity() * (lever_sd * lever_sd + 1e-4));
     const double sd_vel = anchor_static ? options.models.zupt_sigma
                                         : io.velocity_sigma + std::abs(v_odo) * std::sqrt(var_yaw);
     const Eigen::Vector3d sd_bg =
         have_static ? Eigen::Vector3d(align.sd_b_g.cwiseMax(1e-7))
                     : Eigen::Vector3d(Eigen::Vector3d::Constant(noise.gyro_bias_sigma));
     auto& P = s.P_nav;
-    P.block<3, 3>(0, 0) = Eigen::Matrix3d::Identity() * sd_pos * sd_pos;
+    P.block<3, 3>(0, 0) = P_pos;
     P.block<3, 3>(3, 3) = Patt;
     P.block<3, 3>(6, 6) = Eigen::Matrix3d::Identity() * sd_vel * sd_vel;
     P.block<3, 3>(9, 9) = Eigen::Matrix3d::Identity() * std::pow(noise.accel_bias_sigma, 2);
