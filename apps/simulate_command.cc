@@ -58,6 +58,18 @@ void requireFiles(const std::vector<std::string>& files) {
   }
 }
 
+/// Before a run on given GNSS files: `out` is not a dataset already, navigation is given, and
+/// the rover, the base (empty: a rover alone) and the navigation files exist.
+void checkGnssRun(const std::string& out, const std::string& rover, const std::string& base,
+                  const std::vector<std::string>& nav) {
+  refuseDatasetFolder(out);
+  if (nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
+  std::vector<std::string> given{rover};
+  if (!base.empty()) given.push_back(base);
+  given.insert(given.end(), nav.begin(), nav.end());
+  requireFiles(given);
+}
+
 }  // namespace
 
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
@@ -100,12 +112,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
       "(-DGIOCAL_FACTOR_GRAPH=OFF), whose solver fits the path");
 #else
   const sim::SimConfig cfg = sim::readSimConfig(config);
-  refuseDatasetFolder(out);
-  if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
-  std::vector<std::string> given{gnss.rover};
-  if (!gnss.base.empty()) given.push_back(gnss.base);  // without: a rover alone
-  given.insert(given.end(), gnss.nav.begin(), gnss.nav.end());
-  requireFiles(given);
+  checkGnssRun(out, gnss.rover, gnss.base, gnss.nav);
   // Fixed and float solutions; single points are metres off a vehicle's path.
   std::vector<PositionFix> fixes;
   long left_out = 0;
@@ -178,12 +185,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
 void runSimulateMoved(const std::string& config, const MovedGnss& gnss, const std::string& out,
                       std::uint64_t seed, std::ostream& log, const StopRequest* stop) {
   const sim::SimConfig cfg = sim::readSimConfig(config);
-  refuseDatasetFolder(out);
-  if (gnss.nav.empty()) throw std::runtime_error("give the navigation file(s) with --nav");
-  std::vector<std::string> given{gnss.rover};
-  if (!gnss.base.empty()) given.push_back(gnss.base);  // without: a rover alone
-  given.insert(given.end(), gnss.nav.begin(), gnss.nav.end());
-  requireFiles(given);
+  checkGnssRun(out, gnss.rover, gnss.base, gnss.nav);
   const auto start = std::chrono::steady_clock::now();
   const ObsData rover = readRinexObs(gnss.rover);
   for (const std::string& w : rover.warnings)

@@ -177,7 +177,7 @@ TEST(RealMovedRover, GsiTrimbleRoverMovedAlongTheFieldDriveFixesAndCalibrates) {
     EXPECT_GE(s["fix_rate"].get<double>(), 0.95) << estimator;  // measured 1.0 and 1.0
     // The factor graph, one state per GNSS epoch, determines yaw less well with epochs 30 s apart
     // (sigma 0.62 deg on this seed; on simulated field drives 0.72 deg mean error at err/sigma
-    // 1.17, against 0.22 deg at 1 s: bench/gnss_interval.sh), so the yaw target is the EKF's;
+    // 1.17, against 0.21 deg at 1 s: bench/gnss_interval.sh), so the yaw target is the EKF's;
     // both must be consistent and well inside the prior.
     expectCalibrated(s, estimator + " with the GSI base",
                      estimator == "ekf" ? YawBound{} : YawBound{2.0, 0.2});
