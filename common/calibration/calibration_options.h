@@ -8,9 +8,9 @@
 #include "common/calibration/warm_start.h"
 #include "common/gnss/code_outlier_check.h"
 #include "common/gnss/dd_epoch.h"
-#include "common/gnss/time_differenced_phase.h"
 #include "common/gnss/doppler.h"
 #include "common/gnss/lambda.h"
+#include "common/gnss/time_differenced_phase.h"
 #include "common/io/model_options.h"
 #include "common/models/position_model.h"
 #include "common/online/convergence.h"
@@ -112,7 +112,7 @@ struct CalibrationOptions {
   // initial heading comes from the solutions too. Without raw GNSS the solutions are the epochs.
   // Not a YAML key.
   bool loosely_coupled = false;
-  PositionWeighting lc;              // calibration.lc.sigma_scale, .use_height, .learn_heights
+  PositionWeighting lc;  // calibration.lc.sigma_scale, .use_height, .learn_heights
   // One receiver and no base (calibrate --gnss single): time-differenced carrier phase between
   // consecutive rover epochs, Doppler, and single point positions with a loose weight. Not a
   // YAML key (the command line's); `single` holds its settings (calibration.single.*).
@@ -128,9 +128,11 @@ struct CalibrationOptions {
   // increased by their prior covariance before the next one.
   int max_odometer_rejections = 5;
   double max_odometer_gap_s = 0.5;  // a longer gap restarts the odometer interval [s]
-  double gnss_gap_warning_s = 5.0;  // rover epochs further apart are named as an outage [s]
-  double output_rate_hz = 10.0;     // trajectory.csv rate [Hz]
-  double max_imu_gap_s = 0.5;       // longer IMU gaps are reported (and bridged) [s]
+  // Rover epochs further apart (and more than 2.5 of the receiver's intervals) are named as an
+  // outage; a receiver interval beyond it is named once as sparse GNSS [s].
+  double gnss_gap_warning_s = 5.0;
+  double output_rate_hz = 10.0;  // trajectory.csv rate [Hz]
+  double max_imu_gap_s = 0.5;    // longer IMU gaps are reported (and bridged) [s]
   // Longer IMU gaps end the stretch: the navigation state restarts from the data after the gap
   // (static window or motion, heading from GNSS), the calibration is carried over with its
   // covariance. Interpolating the IMU across a gap is a model error the preintegration noise

@@ -32,7 +32,8 @@ enum class Counter {
   kNonFiniteSamples,     // NaN or infinite values: dropped
   kDroppedWithoutImu,    // odometer and GNSS data dropped while the IMU was silent
   kOdometerGaps,         // odometer intervals longer than max_odometer_gap_s
-  kGnssGaps,             // rover epochs more than gnss_gap_warning_s after the previous one
+  kGnssGaps,             // rover epochs more than gnss_gap_warning_s (and 2.5 receiver
+                         // intervals) after the previous one
   kCalibrationJumps,     // epochs at which the calibration moved beyond its chi-square gate
   kOdometerSlips,        // odometer samples left out by the factor graph's slip check
   kNumericalFailures,    // updates, solves or LAMBDA searches that failed numerically

@@ -167,6 +167,9 @@ class Calibrator {
   double flush_until_ = -INFINITY;       // events up to here are processed whatever follows
   double t_imu_first_ = NAN, t_imu_last_ = NAN, t_rover_first_ = NAN, t_rover_last_ = NAN;
   double last_rover_t_ = -INFINITY;
+  double rover_interval_ = INFINITY;  // the shortest interval between rover epochs so far [s]
+  int rover_intervals_ = 0;           // intervals seen
+  bool sparse_named_ = false;         // epochs further apart than gnss_gap_warning_s, named once
   LatencyHistogram latency_;
   double init_time_s_ = 0.0, busy_s_ = 0.0;
   double sink_s_ = 0.0;       // of busy_s_, spent in the sink

@@ -1,5 +1,6 @@
 // GNSS epochs far apart (a receiver logging every 30 s): the first epoch, the initial state's
-// anchor, has only a float RTK solution, and the EKF must not hold integers fitted to it.
+// anchor, has only a float RTK solution, and the EKF must not hold integers fitted to it; the
+// interval is named once as the receiver's, not as an outage between every two epochs.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -46,6 +47,11 @@ TEST(SparseGnss, AFloatFirstEpochIsNotHeldAsFixed) {
   EXPECT_EQ(s["gnss_epochs"].get<int>(), 42);
   EXPECT_EQ(s["counters"]["fixes_checked_against_truth"].get<int>(), 42);  // 22 before
   EXPECT_LE(s["counters"]["wrong_fixes"].get<int>(), 1);                   // 19 before, 1 now
+  // Epochs 30 s apart are the receiver's interval, named once, not 41 outages.
+  EXPECT_EQ(s["counters"]["gnss_gaps"].get<int>(), 0);  // 41 before
+  const std::string warnings = s["warnings"].dump();
+  EXPECT_NE(warnings.find("GNSS epochs 30.0 s apart"), std::string::npos) << warnings;
+  EXPECT_EQ(warnings.find("an outage"), std::string::npos) << warnings;
 }
 
 }  // namespace
