@@ -276,8 +276,8 @@ void Calibrator::acceptRover(ObsEpoch e) {
       run_.warn("GNSS epochs " + fixedText(rover_interval_, 1) +
                 " s apart, beyond calibration.gnss_gap_warning_s: taken as the receiver's "
                 "interval, not as outages; the factor graph, one state per GNSS epoch, "
-                "determines yaw and s_v about 3 times less well at 30 s than at 1 s, the EKF as "
-                "well as at 1 s (docs/results.md, the GNSS epoch interval)");
+                "determines yaw and s_v about 3 times less well at 30 s than at 1 s, the EKF yaw "
+                "as well and s_v 1.5 times less (docs/results.md, the GNSS epoch interval)");
     }
   }
   last_rover_t_ = e.t;
