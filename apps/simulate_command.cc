@@ -70,6 +70,16 @@ void checkGnssRun(const std::string& out, const std::string& rover, const std::s
   requireFiles(given);
 }
 
+/// The base (empty: none) and navigation files copied in under their names in `d`, then the
+/// dataset committed (unless a stop was asked for).
+void finishGnssDataset(OutputSet& outputs, const DatasetDescription& d, const std::string& base,
+                       const std::vector<std::string>& nav, const StopRequest* stop) {
+  if (!base.empty()) copyInto(outputs, base, d.base_obs);
+  for (size_t k = 0; k < nav.size(); ++k) copyInto(outputs, nav[k], d.nav[k]);
+  checkStop(stop);
+  outputs.commit();
+}
+
 }  // namespace
 
 void runSimulate(const std::string& config, const std::string& out, std::uint64_t seed,
@@ -159,10 +169,7 @@ void runSimulateAlong(const std::string& config, const GivenGnss& gnss, const st
   outputs.stagedPath("dataset.yaml", true);
   sim::writeDataset(logs, outputs.staging());
   copyInto(outputs, gnss.rover, d.rover_obs);
-  if (!gnss.base.empty()) copyInto(outputs, gnss.base, d.base_obs);
-  for (size_t k = 0; k < gnss.nav.size(); ++k) copyInto(outputs, gnss.nav[k], d.nav[k]);
-  checkStop(stop);
-  outputs.commit();
+  finishGnssDataset(outputs, d, gnss.base, gnss.nav, stop);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   log << std::fixed << std::setprecision(3) << "simulated '" << cfg.name
@@ -234,10 +241,7 @@ void runSimulateMoved(const std::string& config, const MovedGnss& gnss, const st
     }
   }
   writeRinexObs(outputs.stagedPath(d.rover_obs), h, moved.epochs);
-  if (!gnss.base.empty()) copyInto(outputs, gnss.base, d.base_obs);
-  for (size_t k = 0; k < gnss.nav.size(); ++k) copyInto(outputs, gnss.nav[k], d.nav[k]);
-  checkStop(stop);
-  outputs.commit();
+  finishGnssDataset(outputs, d, gnss.base, gnss.nav, stop);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   log << std::fixed << std::setprecision(3) << "simulated '" << cfg.name
