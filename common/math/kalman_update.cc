@@ -85,18 +85,51 @@ void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double ch
 
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows) {
   // S_ii = h_i P h_i^T over the row's nonzeros only: a row touches a few blocks of the state.
-  Eigen::VectorXd z(rows.residual.size());
-  std::vector<Eigen::Index> cols;
-  for (Eigen::Index i = 0; i < z.size(); ++i) {
-    cols.clear();
-    for (Eigen::Index j = 0; j < rows.H.cols(); ++j) {
-      if (rows.H(i, j) != 0.0) cols.push_back(j);
+  // The nonzeros are found column by column (H is column-major, and most of a long state's
+  // columns are zero in every row: skipped by one vectorized test), then listed row by row.
+  const Eigen::Index m = rows.residual.size(), n = rows.H.cols();
+  std::vector<Eigen::Index> nonzero_cols;
+  std::vector<Eigen::Index> start(static_cast<size_t>(m) + 1, 0);
+  nonzero_cols.reserve(static_cast<size_t>(n));
+  for (Eigen::Index j = 0; j < n; ++j) {
+    if (!(rows.H.col(j).array() != 0.0).any()) continue;
+    nonzero_cols.push_back(j);
+    const double* c = rows.H.col(j).data();
+    for (Eigen::Index i = 0; i < m; ++i) start[static_cast<size_t>(i) + 1] += c[i] != 0.0;
+  }
+  for (Eigen::Index i = 0; i < m; ++i) start[i + 1] += start[i];
+  std::vector<Eigen::Index> cols(static_cast<size_t>(start[m]));
+  std::vector<Eigen::Index> next(start.begin(), start.end() - 1);
+  for (const Eigen::Index j : nonzero_cols) {  // ascending, so each row's list is sorted
+    const double* c = rows.H.col(j).data();
+    for (Eigen::Index i = 0; i < m; ++i) {
+      if (c[i] != 0.0) cols[static_cast<size_t>(next[i]++)] = j;
     }
-    double s = rows.R(i, i);
-    for (const Eigen::Index a : cols) {
-      for (const Eigen::Index b : cols) s += rows.H(i, a) * P(a, b) * rows.H(i, b);
+  }
+  // Consecutive rows with the same columns (a GNSS epoch's rows all touch the same pose blocks)
+  // are taken together: their h gathered into H_c, P on those columns into P_cc, and
+  // S_ii = R_ii + ((H_c P_cc) .* H_c) summed along the row.
+  Eigen::VectorXd z(m);
+  Eigen::MatrixXd H_c, P_cc;
+  for (Eigen::Index i0 = 0; i0 < m;) {
+    const Eigen::Index b0 = start[i0], k = start[i0 + 1] - b0;
+    const Eigen::Index* c = cols.data() + b0;
+    Eigen::Index i1 = i0 + 1;
+    while (i1 < m && start[i1 + 1] - start[i1] == k &&
+           std::equal(c, c + k, cols.data() + start[i1]))
+      ++i1;
+    H_c.resize(i1 - i0, k);
+    P_cc.resize(k, k);
+    for (Eigen::Index u = 0; u < k; ++u) {
+      H_c.col(u) = rows.H.col(c[u]).segment(i0, i1 - i0);
+      for (Eigen::Index v = 0; v < k; ++v) P_cc(v, u) = P(c[v], c[u]);
     }
-    z[i] = std::abs(rows.residual[i]) / std::sqrt(std::max(s, 1e-300));
+    const Eigen::VectorXd hPh = (H_c * P_cc).cwiseProduct(H_c).rowwise().sum();
+    for (Eigen::Index i = i0; i < i1; ++i) {
+      const double s = rows.R(i, i) + hPh[i - i0];
+      z[i] = std::abs(rows.residual[i]) / std::sqrt(std::max(s, 1e-300));
+    }
+    i0 = i1;
   }
   return z;
 }

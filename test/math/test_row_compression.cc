@@ -102,5 +102,34 @@ TEST(RowCompression, LeavesRowsAloneWhereItCannotHelpOrWouldBeWrong) {
   EXPECT_EQ(compressRows(singular, {4, 5, 6, 7, 8, 9}).H.rows(), 10);
 }
 
+// normalizedInnovations against |r_i| / sqrt(h_i P h_i^T + R_ii) formed densely: rows that
+// touch every column, rows sharing a few columns (taken as one group), a row with as many
+// columns but other ones after them, the first group's columns again, and a row of zeros.
+TEST(NormalizedInnovations, EqualTheDenseFormulaRowByRow) {
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g;
+  const int n = 12;
+  const Eigen::MatrixXd P = randomCovariance(rng, n);
+  MeasurementRows rows = randomRows(rng, n);
+  rows.H.conservativeResize(13, n);
+  rows.H.bottomRows(3).setZero();
+  for (int j : {2, 5, 9}) rows.H(10, j) = g(rng);  // as many columns as rows 4-9, others
+  rows.H(11, 1) = g(rng);                          // the subset's columns again, after the break
+  rows.H(11, 4) = g(rng);
+  rows.H(11, 7) = g(rng);
+  rows.residual.conservativeResize(13);
+  rows.residual.tail(3) << g(rng), g(rng), g(rng);
+  Eigen::MatrixXd R = Eigen::MatrixXd::Identity(13, 13);
+  R.topLeftCorner(10, 10) = rows.R;
+  rows.R = R;
+  const Eigen::VectorXd z = normalizedInnovations(P, rows);
+  ASSERT_EQ(z.size(), 13);
+  for (int i = 0; i < 13; ++i) {
+    const double s = rows.H.row(i) * P * rows.H.row(i).transpose() + rows.R(i, i);
+    EXPECT_NEAR(z[i], std::abs(rows.residual[i]) / std::sqrt(s), 1e-12 * z[i]) << i;
+  }
+  EXPECT_NEAR(z[12], std::abs(rows.residual[12]), 1e-15);  // no state: R alone
+}
+
 }  // namespace
 }  // namespace giocal
