@@ -38,13 +38,30 @@ Eigen::MatrixXd ddCovariance(const std::vector<DdObservation>& obs,
     const auto& p = var[static_cast<size_t>(idx)];
     return o.phase ? p.second : p.first;
   };
+  // Rows share their reference's variance when they share the reference, band and kind: each
+  // row's group found once (its first row), the rows of a group chained, and only they paired.
+  const auto n = static_cast<size_t>(m);
+  std::vector<long> first(n), next(n, -1), last(n, -1);
+  for (size_t a = 0; a < n; ++a) {
+    const DdObservation& o = obs[a];
+    first[a] = static_cast<long>(a);
+    for (size_t b = 0; b < a; ++b) {
+      const DdObservation& ob = obs[b];
+      if (first[b] == static_cast<long>(b) && ob.ref == o.ref && ob.band == o.band &&
+          ob.phase == o.phase) {
+        first[a] = static_cast<long>(b);
+        break;
+      }
+    }
+    const auto g = static_cast<size_t>(first[a]);
+    if (last[g] >= 0) next[static_cast<size_t>(last[g])] = static_cast<long>(a);
+    last[g] = static_cast<long>(a);
+  }
   for (long a = 0; a < m; ++a) {
     const DdObservation& o = obs[static_cast<size_t>(a)];
     R(a, a) = v(o, o.sat_index);
-    for (long b = 0; b < m; ++b) {
-      const DdObservation& ob = obs[static_cast<size_t>(b)];
-      if (ob.ref == o.ref && ob.band == o.band && ob.phase == o.phase) R(a, b) += v(o, o.ref_index);
-    }
+    for (long b = first[static_cast<size_t>(a)]; b >= 0; b = next[static_cast<size_t>(b)])
+      R(a, b) += v(o, o.ref_index);
   }
   return R;
 }
