@@ -28,6 +28,8 @@ class DdGnssModel : public MeasurementModel {
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
                 std::vector<Eigen::MatrixXd>* jacobians) const override;
   Eigen::MatrixXd covariance() const override { return covariance_; }
+  /// Into R's storage: no temporary of the epoch's m x m covariance.
+  void covarianceInto(Eigen::MatrixXd& R) const override { R = covariance_; }
 
   /// Block index of the ambiguity of (sat, band), -1 if none.
   int ambiguityBlock(const SatId& sat, char band) const;
