@@ -100,15 +100,22 @@ std::optional<SatelliteAtReception> BroadcastOrbits::atReception(
   return atReception(*eph, t_rx, range, band, rx_e);
 }
 
-SatelliteAtReception BroadcastOrbits::atReception(const Ephemeris& eph_ref, double t_rx,
-                                                  double range, char band,
-                                                  const Eigen::Vector3d& rx_e) {
-  const Ephemeris* eph = &eph_ref;
+SatelliteAtReception BroadcastOrbits::atReception(const Ephemeris& eph, double t_rx, double range,
+                                                  char band, const Eigen::Vector3d& rx_e) {
+  return inReceptionFrame(eph, atTransmission(eph, t_rx, range), range, band, rx_e);
+}
+
+SatelliteState BroadcastOrbits::atTransmission(const Ephemeris& eph, double t_rx, double range) {
   // Transmission time in GPS time: the tag minus the pseudo-range is the satellite clock's
   // transmission time (both carry the receiver clock error), corrected by the satellite clock.
   double t_tx = t_rx - range / kSpeedOfLight;
-  t_tx -= satelliteClockPolynomial(*eph, t_tx);
-  const SatelliteState s = satelliteState(*eph, t_tx);
+  t_tx -= satelliteClockPolynomial(eph, t_tx);
+  return satelliteState(eph, t_tx);
+}
+
+SatelliteAtReception BroadcastOrbits::inReceptionFrame(const Ephemeris& eph,
+                                                       const SatelliteState& s, double range,
+                                                       char band, const Eigen::Vector3d& rx_e) {
   // Sagnac: express the transmit-time position in the ECEF frame of reception, rotating by the
   // geometric flight time (iterated once: the rotation changes the range by metres only).
   // The Earth turns by omega tau about z: a rotation by -omega tau.
@@ -125,7 +132,7 @@ SatelliteAtReception BroadcastOrbits::atReception(const Ephemeris& eph_ref, doub
   SatelliteAtReception out;
   out.p_e = R * s.p_e;
   out.v_e = R * s.v_e;
-  out.clock = s.clock - groupDelay(*eph, band);
+  out.clock = s.clock - groupDelay(eph, band);
   out.clock_drift = s.clock_drift;
   out.variance = s.variance;
   return out;

@@ -38,6 +38,13 @@ class BroadcastOrbits {
   /// The same with a chosen ephemeris (a time-differenced pair computes both epochs with one).
   static SatelliteAtReception atReception(const Ephemeris& eph, double t_rx, double range,
                                           char band, const Eigen::Vector3d& rx_e);
+  /// atReception in two steps: the satellite at its transmission time, which depends on the
+  /// tag and the pseudo-range only, then turned into the frame of reception from `rx_e` (an
+  /// iterated position fix computes the first once per satellite).
+  static SatelliteState atTransmission(const Ephemeris& eph, double t_rx, double range);
+  static SatelliteAtReception inReceptionFrame(const Ephemeris& eph, const SatelliteState& s,
+                                               double range, char band,
+                                               const Eigen::Vector3d& rx_e);
 
   const NavData& nav() const { return nav_; }
   /// A navigation message received later (online); one already held (same satellite and toe) is

@@ -14,6 +14,9 @@ namespace {
 struct Candidate {
   SatId sat;
   const SignalObs* sig;
+  // The satellite at transmission, which the iterations do not change: found on the first.
+  const Ephemeris* eph = nullptr;
+  std::optional<SatelliteState> sent;
   SatelliteAtReception s;
   double el = 0, az = 0, var = 0, residual = 0;
   Eigen::Vector3d u;  // unit vector receiver -> satellite
@@ -63,7 +66,12 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
     const SignalObs* sig = so.bestOnBand(primaryBand(so.sat.sys));
     if (!sig || !(sig->P > 1e7) || !(sig->P < 6e7)) continue;
     if (options.cn0_mask_dbhz > 0 && !(sig->S >= options.cn0_mask_dbhz)) continue;
-    cands.push_back({so.sat, sig, {}, 0, 0, 0, 0, Eigen::Vector3d::Zero()});
+    Candidate c;
+    c.sat = so.sat;
+    c.sig = sig;
+    c.eph = orbits.select(so.sat, epoch.t);
+    c.u.setZero();
+    cands.push_back(c);
   }
   std::vector<bool> excluded(cands.size(), false);
   const double mask = options.elevation_mask_deg * M_PI / 180.0;
@@ -86,9 +94,9 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
       for (size_t k = 0; k < cands.size(); ++k) {
         if (excluded[k]) continue;
         Candidate& c = cands[k];
-        const auto s = orbits.atReception(c.sat, epoch.t, c.sig->P, c.sig->band, x);
-        if (!s) continue;
-        c.s = *s;
+        if (!c.eph) continue;
+        if (!c.sent) c.sent = BroadcastOrbits::atTransmission(*c.eph, epoch.t, c.sig->P);
+        c.s = BroadcastOrbits::inReceptionFrame(*c.eph, *c.sent, c.sig->P, c.sig->band, x);
         const Eigen::Vector3d d = c.s.p_e - x;
         c.u = d.normalized();
         double trop = 0, iono = 0;
