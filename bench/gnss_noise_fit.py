@@ -6,7 +6,11 @@ satellite, the ratio of the residuals to the sigma giocal assumes today (chi2/do
 2 (f(el_sat) + f(el_ref)) with f(el) = s0^2 (1 + 1/sin el), s0 from --phase / --code), and a fit of
 the undifferenced variance f(el) = a^2 + b^2 / sin^2(el) (RTKLIB's form) by least squares on the
 squared residuals, trimmed at 5 sigma twice.
-Usage: bench/gnss_noise_fit.py [--phase 0.003] [--code 0.3] name=residuals.csv ...
+It also prints how each DD series (satellite, reference, band) is correlated with itself 1, 5, 10
+and 30 s later (the correlation of its deviations from its mean, pooled over the series): white
+noise gives 0, multipath that changes slowly gives values near 1.
+Usage: bench/gnss_noise_fit.py [--phase 0.003] [--code 0.3] [--first-s T] name=residuals.csv ...
+       (--first-s: only the first T seconds of each file, e.g. a simulated drive's open sky)
        bench/gnss_noise_fit.py --cmc [--code 0.3] name=cmc.csv ...   (a receiver alone: code
        minus carrier per arc, a line per arc taken out; RMS by elevation and by C/N0, the same fit)
 """
@@ -109,8 +113,34 @@ def cmc_main(files, s0):
         print(line)
 
 
+def lag_correlations(data, kind, lags=(1, 5, 10, 30)):
+    """Pooled correlation of each DD series' deviations from its mean, `lag` seconds apart."""
+    series = {}
+    for d in data:
+        if d["kind"] == kind:
+            key = (d["sat"], d["ref"], d["band"])
+            series.setdefault(key, {})[round(float(d["t"]))] = float(d["residual_m"])
+    out = []
+    for lag in lags:
+        cov = var = 0.0
+        n_cov = n_var = 0
+        for s in series.values():
+            if len(s) < lag + 10:
+                continue
+            m = sum(s.values()) / len(s)
+            var += sum((v - m) ** 2 for v in s.values())
+            n_var += len(s)
+            for t, v in s.items():
+                if t + lag in s:
+                    cov += (v - m) * (s[t + lag] - m)
+                    n_cov += 1
+        out.append((lag, cov / n_cov / (var / n_var) if n_cov and var > 0 else float("nan")))
+    return out
+
+
 def main():
     s0 = {"phase": 0.003, "code": 0.3}
+    first_s = math.inf
     files = []
     cmc = False
     args = sys.argv[1:]
@@ -120,6 +150,8 @@ def main():
             cmc = True
         elif a in ("--phase", "--code"):
             s0[a[2:]] = float(args.pop(0))
+        elif a == "--first-s":
+            first_s = float(args.pop(0))
         else:
             name, path = a.split("=", 1)
             files.append((name, path))
@@ -129,6 +161,9 @@ def main():
     bins = [10, 15, 20, 30, 45, 60, 90]
     for name, path in files:
         data = load(path)
+        if data:
+            t0 = float(data[0]["t"])
+            data = [d for d in data if float(d["t"]) - t0 < first_s]
         baseline = float(data[0]["baseline_m"]) if data else 0.0
         for kind in ("phase", "code"):
             rows = [(float(d["residual_m"]), math.radians(float(d["el_sat_deg"])),
@@ -147,6 +182,8 @@ def main():
             f = fit(rows)
             if f:
                 line += f"   fit a {f[0] * 1000:.2f} mm, b {f[1] * 1000:.2f} mm ({f[2]} trimmed)"
+            line += "   correlated " + ", ".join(
+                f"{lag} s {c:.2f}" for lag, c in lag_correlations(data, kind))
             print(line)
 
 

@@ -124,6 +124,7 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
                                   spec.vtec_random_walk > 0 || spec.zenith_wet_random_walk > 0 ||
                                   spec.half_cycle_share > 0;
   std::mt19937_64 rng_alone(rover_alone_errors ? rng() : 0);
+  Multipath multipath(spec.multipath, spec.multipath.enabled() ? rng() : 0);
   std::map<SatId, BroadcastError> broadcast;
   for (const SatId& sat : sats) {
     BroadcastError& b = broadcast[sat];
@@ -220,9 +221,11 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
             ++out.slips;
           }
           const double extra = scene ? gauss(rng, scene->extra_phase_sigma) : 0.0;
-          s.P = common + iono + nlos + gauss(rng, spec.code_sigma * factor);
-          s.L = (common - iono + extra + gauss(rng, spec.phase_sigma * factor)) / lambda +
-                out.ambiguity[key];
+          const MultipathError mp = multipath.at(r, sat, band, tag, factor);
+          s.P = common + iono + nlos + mp.code + gauss(rng, spec.code_sigma * factor);
+          s.L =
+              (common - iono + extra + mp.phase + gauss(rng, spec.phase_sigma * factor)) / lambda +
+              out.ambiguity[key];
           s.D = -(g.range_rate + g.u.dot(be.orbit_rate) +
                   kSpeedOfLight * (rc.drift - g.clock_drift)) /
                     lambda +

@@ -15,6 +15,7 @@
 
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/observation.h"
+#include "sim/multipath.h"
 
 namespace giocal::sim {
 
@@ -46,6 +47,7 @@ struct GnssSimSpec {
   double code_sigma = 0.3;      // at zenith; sigma(el) = s sqrt(1 + 1/sin el) [m]
   double phase_sigma = 0.003;   // [m]
   double doppler_sigma = 0.03;  // [m/s]
+  MultipathSpec multipath;      // slow code and phase errors on both receivers (none by default)
   Eigen::Vector3d base_offset_enu{3000.0, 2600.0, 5.0};  // base from the origin [m] (~4 km)
   double clock_offset_sd = 1e-6;     // initial receiver clock offset, 1-sigma [s]
   double clock_drift_sd = 1e-9;      // receiver clock drift, 1-sigma [s/s]

@@ -117,6 +117,11 @@ SimConfig readSimConfig(const std::string& path) {
     g.code_sigma = y.numberOr("gnss.code_sigma", g.code_sigma, 0.0, 100.0);
     g.phase_sigma = y.numberOr("gnss.phase_sigma", g.phase_sigma, 0.0, 1.0);
     g.doppler_sigma = y.numberOr("gnss.doppler_sigma", g.doppler_sigma, 0.0, 10.0);
+    g.multipath.code_sigma =
+        y.numberOr("gnss.multipath_code_sigma", g.multipath.code_sigma, 0.0, 100.0);
+    g.multipath.phase_sigma =
+        y.numberOr("gnss.multipath_phase_sigma", g.multipath.phase_sigma, 0.0, 1.0);
+    g.multipath.tau_s = y.numberOr("gnss.multipath_tau_s", g.multipath.tau_s, 0.01, 1e5);
     if (y.has("gnss.base_offset_enu"))
       g.base_offset_enu = y.vector3("gnss.base_offset_enu", -1e5, 1e5);
     if (y.has("gnss.base")) {
