@@ -22,8 +22,8 @@ struct MovedRover {
 
 /// Each code, phase and Doppler of the receiver that stood at `static_e` (ECEF, surveyed) becomes
 /// what the antenna on `path` receives at the same time tag (the path taken at the true reception
-/// time, the tag less the receiver clock offset its codes show): the range and range rate of the move
-/// (exact light time and Sagnac, sky_geometry.h) and the troposphere's change with height are
+/// time, the tag less the receiver clock offset its codes show): the range and range rate of the
+/// move (exact light time and Sagnac, sky_geometry.h) and the troposphere's change with height are
 /// added, so that everything else stays the real receiver's. Left as it was: the ionosphere's and
 /// multipath's change over the path (metres to hundreds of metres) and the phase wind-up of the
 /// antenna turning with the vehicle, common to all satellites to first order (docs/design.md).
