@@ -1,5 +1,6 @@
 #include "sim/multipath.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace giocal::sim {

@@ -3,6 +3,7 @@
 // receivers' are (docs/results.md: real DD code residuals 0.55-0.94 correlated at 1 s).
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <random>
 #include <tuple>
