@@ -5,7 +5,7 @@
 # package rtklib) on the same files, and prints per scene and seed the fix rate and the fixes more
 # than 5 cm (horizontally) from the true antenna, then the totals over the seeds.
 # Usage: [GIOCAL=<another giocal binary>] bench/rtk_under_trees.sh [first seed, default 501]
-#        [seeds, default 4] [giocal config]
+#        [seeds, default 4] [giocal config]   (PRESET=<a preset> in place of the field preset)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-501}"
@@ -13,7 +13,7 @@ count="${2:-4}"
 config=()
 [ -n "${3:-}" ] && config=(--config "$3")
 giocal="${GIOCAL:-$root/build/apps/giocal}"
-preset="$root/config/sim/field.yaml"
+preset="${PRESET:-$root/config/sim/field.yaml}"
 command -v rnx2rtkp >/dev/null || { echo "rnx2rtkp missing: apt-get install rtklib"; exit 1; }
 [ -x "$giocal" ] || { echo "build first: bash scripts/setup.sh"; exit 1; }
 work="$(mktemp -d)"
