@@ -5,7 +5,8 @@
 # pairs' were measured (the drive's open-sky first 320 s), then the EKF's or the factor graph's
 # Monte Carlo on both.
 # Usage: bench/real_like_gnss.sh [first seed] [seeds] [ekf|fgo]   (default 9501 6 ekf)
-#        CODE=0.1 PHASE=0.0015 MP_CODE=0.12 MP_PHASE=0.001 TAU=20 override the noise [m, s].
+#        CODE=0.1 PHASE=0.0015 MP_CODE=0.12 MP_PHASE=0.001 TAU=20 override the noise [m, s];
+#        PRESET_OUT=<file> only writes the preset there.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-9501}"
@@ -22,6 +23,11 @@ sed -e "s#^  nav_file: \.\./\.\./#  nav_file: $root/#" \
   -e "s#^  phase_sigma: .*#  phase_sigma: ${PHASE:-0.0015}\n  multipath_phase_sigma: ${MP_PHASE:-0.001}#" \
   "$root/config/sim/field.yaml" > "$preset"
 grep -q multipath_code_sigma "$preset" || { echo "field.yaml changed: update this script"; exit 1; }
+if [ -n "${PRESET_OUT:-}" ]; then  # the preset alone, for other benches (PRESET= of rtk_under_trees.sh)
+  cp "$preset" "$PRESET_OUT"
+  echo "wrote $PRESET_OUT"
+  exit 0
+fi
 for p in "$root/config/sim/field.yaml" "$preset"; do
   d="$work/sim"
   rm -rf "$d"
