@@ -5,6 +5,8 @@
 # with --gnss single. Prints per preset and state the mean |error| of each scheme and their
 # ratio, the mean |error|/sigma, the mean NEES7, and the speed.
 # Usage: [PRESETS="paper field"] [ESTIMATOR=ekf|fgo] bench/single_receiver.sh [seed...]
+#          (a preset is a name in config/sim/ or a path to a .yaml, e.g. the one
+#          `PRESET_OUT=<file> bench/real_like_gnss.sh` writes)
 #          (default seeds 6001-6010; about 15 s per seed and preset)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -14,8 +16,10 @@ seeds=("${@:-6001 6002 6003 6004 6005 6006 6007 6008 6009 6010}")
 read -r -a seeds <<< "${seeds[*]}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-for preset in ${PRESETS:-paper field}; do
-  sed "s|\.\./\.\./data/|$root/data/|" "$root/config/sim/$preset.yaml" > "$work/$preset.yaml"
+for source in ${PRESETS:-paper field}; do
+  preset="$(basename "$source" .yaml)"
+  [ -f "$source" ] || source="$root/config/sim/$preset.yaml"
+  sed "s|\.\./\.\./data/|$root/data/|" "$source" > "$work/$preset.yaml"
   for seed in "${seeds[@]}"; do
     d="$work/$preset-$seed"
     "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --out "$d-base" > /dev/null
@@ -34,7 +38,8 @@ states = [("s_v", lambda v: v["s_v"]), ("s_w", lambda v: v["s_w"]),
           ("p_b_m.x", lambda v: v["p_b_m"][0]), ("p_b_m.y", lambda v: v["p_b_m"][1]),
           ("roll", lambda v: v["rpy_b_m_deg"][0]), ("pitch", lambda v: v["rpy_b_m_deg"][1]),
           ("yaw", lambda v: v["rpy_b_m_deg"][2])]
-for preset in os.environ.get("PRESETS", "paper field").split():
+for source in os.environ.get("PRESETS", "paper field").split():
+    preset = os.path.basename(source).removesuffix(".yaml")
     runs = {"rtk": [], "single": []}
     for seed in seeds:
         for scheme in runs:
