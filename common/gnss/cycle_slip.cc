@@ -73,14 +73,21 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
       tr.mw = mw;
       tr.has_gf = dual;
       tr.has_mw = dual && !std::isnan(mw);
+      tr.attr = s->attr;
+      tr.partner_attr = dual ? other->attr : 0;
       bool slip = (s->lli & 1) != 0 || epoch.flag == 1;
       const auto it = findKey(tracks_, key);
-      if (it == tracks_.end() || epoch.t - it->second.t > options_.max_gap) {
+      // Another signal of the band (L2W after L2L) is another tracking loop: its phase has its
+      // own integer, and in files whose phases are not aligned (RINEX 2, 3.00) a quarter cycle.
+      if (it == tracks_.end() || epoch.t - it->second.t > options_.max_gap ||
+          it->second.attr != tr.attr) {
         slip = true;
       } else {
         const Track& p = it->second;
         const double dt = epoch.t - p.t;
-        const bool gf_tested = dual && p.has_gf;
+        // The combinations compare across epochs only with the same partner signal.
+        const bool same_partner = p.partner_attr == tr.partner_attr;
+        const bool gf_tested = dual && p.has_gf && same_partner;
         if (gf_tested && std::abs(gf - p.gf) > options_.gf_threshold + options_.gf_rate * dt) {
           slip = true;
         }
@@ -97,7 +104,7 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
         // by as many wide-lane cycles. When the phase alone passes both the geometry-free and the
         // Doppler test, its jump is the code's, not a slip (the code outlier check deals with
         // it); it decides only where one of those tests is missing.
-        if (tr.has_mw && p.has_mw && !(gf_tested && doppler_tested)) {
+        if (tr.has_mw && p.has_mw && same_partner && !(gf_tested && doppler_tested)) {
           // Signed: a pair taken in either order then moves by the same metres.
           const double lw = kSpeedOfLight / (carrierFrequency(so.sat.sys, s->band) -
                                              carrierFrequency(so.sat.sys, other->band));

@@ -25,9 +25,11 @@ class CycleSlipDetector {
   explicit CycleSlipDetector(const CycleSlipOptions& options = {}) : options_(options) {}
 
   /// Updates with one epoch; afterwards slipped(sat, band) tells whether that phase slipped
-  /// since the previous epoch (a new satellite or signal counts as slipped). Every band with a
-  /// phase is tracked; the geometry-free and Melbourne-Wuebbena tests pair it with the
-  /// satellite's primary band (for the primary band, with its first other band).
+  /// since the previous epoch (a new satellite or signal counts as slipped, and so does a band
+  /// whose best signal changed attribute, e.g. L2W to L2L: another tracking loop, with its own
+  /// integer). Every band with a phase is tracked; the geometry-free and Melbourne-Wuebbena
+  /// tests pair it with the satellite's primary band (for the primary band, with its first other
+  /// band), and are skipped for an epoch in which that partner changed attribute.
   void update(const ObsEpoch& epoch);
   bool slipped(const SatId& sat, char band) const;
 
@@ -36,6 +38,7 @@ class CycleSlipDetector {
     double t = 0, gf = 0, mw = 0, L = 0;
     bool has_gf = false, has_mw = false;
     double D = 0;
+    char attr = 0, partner_attr = 0;  // the signal's attribute and its partner's
   };
   using Key = std::pair<SatId, char>;
   CycleSlipOptions options_;

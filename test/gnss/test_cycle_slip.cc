@@ -115,6 +115,49 @@ TEST(CycleSlip, ASignalBlockedForAMomentIsTestedAcrossTheGap) {
   EXPECT_TRUE(single.slipped(g, '1')) << "5 s without a geometry-free test";
 }
 
+// The mosaic rover tracks GPS L2 twice (L2W and L2L). When L2W drops out, L2L is another tracking
+// loop with its own integer (and, in files whose phases are not aligned, a quarter cycle): the
+// band counts as slipped. L1's geometry-free partner changed with it, so L1 is tested by its
+// Doppler alone and stays continuous.
+TEST(CycleSlip, AnotherSignalOnTheBandIsANewAmbiguity) {
+  ObsData d = readRinexObs(kMosaic + "rover.obs");
+  const SatId g{GnssSystem::kGps, 5};
+  const auto drop_w = [&](ObsEpoch& e) {
+    for (auto& so : e.sats) {
+      if (so.sat != g) continue;
+      so.signals.erase(
+          std::remove_if(so.signals.begin(), so.signals.end(),
+                         [](const SignalObs& x) { return x.band == '2' && x.attr == 'W'; }),
+          so.signals.end());
+    }
+  };
+  const auto best_l2 = [&](const ObsEpoch& e) {
+    const SignalObs* s = nullptr;
+    for (const auto& so : e.sats) {
+      if (so.sat == g) s = so.bestOnBand('2');
+    }
+    return s ? s->attr : '-';
+  };
+  ASSERT_EQ(best_l2(d.epochs[150]), 'W');
+  for (size_t k = 150; k < d.epochs.size(); ++k) drop_w(d.epochs[k]);
+  ASSERT_EQ(best_l2(d.epochs[150]), 'L');
+  ASSERT_EQ(best_l2(d.epochs[151]), 'L');
+  CycleSlipDetector det;
+  for (size_t k = 0; k <= 151; ++k) {
+    det.update(d.epochs[k]);
+    if (k == 149) {
+      EXPECT_FALSE(det.slipped(g, '2'));
+    }
+    if (k == 150) {
+      EXPECT_TRUE(det.slipped(g, '2')) << "L2W -> L2L";
+      EXPECT_FALSE(det.slipped(g, '1')) << "L1 continuous, its partner changed";
+    }
+    if (k == 151) {
+      EXPECT_FALSE(det.slipped(g, '2')) << "L2L continuous from then on";
+    }
+  }
+}
+
 // An NLOS code error of 20 m on both bands moves Melbourne-Wuebbena by about 23 wide-lane cycles
 // while the phases stay continuous: with the geometry-free and Doppler tests passing it is not a
 // slip (10 % NLOS code used to restart ambiguities about 1650 times in 150 s); without Doppler the
