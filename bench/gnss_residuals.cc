@@ -7,6 +7,9 @@
 // With --rover and --nav alone (no base): code minus carrier of every signal with both, with its
 // elevation, C/N0 and loss-of-lock flag, for the code noise of a receiver without a base (the
 // constant ambiguity and the slow ionosphere are taken out per arc by gnss_noise_fit.py --cmc).
+// With --rover, --nav and --truth truth.csv --p-b-g x,y,z (a simulated drive): every
+// time-differenced phase row (TdcpBuilder, the single-receiver scheme's) against the true antenna
+// displacement, for checking the TDCP model against the simulator's phases.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "common/geodesy/wgs84.h"
 #include "common/gnss/atmosphere.h"
 #include "common/gnss/dd_epoch.h"
 #include "common/gnss/observation.h"
@@ -21,11 +25,63 @@
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/gnss/rtk_job.h"
+#include "common/gnss/time_differenced_phase.h"
+#include "common/io/sensor_logs.h"
 
 using namespace giocal;
 
+namespace {
+
+// The TDCP rows of a simulated drive against its truth: t, sat, ref, band, elevations, the
+// residual (observed minus the true displacement's prediction) and the row's stated sigma.
+int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& nav_paths,
+                const std::string& truth_path, const Eigen::Vector3d& p_b_g) {
+  std::vector<NavData> navs;
+  for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
+  const BroadcastOrbits orbits(mergeNav(navs));
+  const ObsData rover = readRinexObs(rover_path);
+  const std::vector<TruthSample> truth = readTruthCsv(truth_path);
+  size_t k = 0;
+  // The antenna (ECEF) at the truth row nearest t.
+  const auto antenna = [&](double t, Eigen::Vector3d& p_e) {
+    while (k + 1 < truth.size() && std::abs(truth[k + 1].t - t) <= std::abs(truth[k].t - t)) ++k;
+    const TruthSample& s = truth[k];
+    if (std::abs(s.t - t) > 1e-3) return false;
+    const double lat = s.lat_deg * M_PI / 180.0, lon = s.lon_deg * M_PI / 180.0;
+    p_e = ecefFromGeodetic({lat, lon, s.h}) +
+          rotationEcefFromEnu(lat, lon) * (s.q_n_b.toRotationMatrix() * p_b_g);
+    return true;
+  };
+  TdcpBuilder builder(orbits);
+  std::map<double, Eigen::Vector3d> at;  // antenna by epoch time
+  std::printf("t,sat,ref,band,el_sat_deg,el_ref_deg,residual_m,sigma_m\n");
+  for (const ObsEpoch& r : rover.epochs) {
+    Eigen::Vector3d p_e;
+    if (!antenna(r.t, p_e)) continue;
+    at[r.t] = p_e;
+    const TdcpPair pair = builder.add(r, p_e);
+    const auto a0 = at.find(pair.t0), a1 = at.find(pair.t1);
+    if (pair.rows.empty() || a0 == at.end() || a1 == at.end()) continue;
+    const Eigen::MatrixXd C = tdcpCovariance(pair);
+    for (size_t i = 0; i < pair.rows.size(); ++i) {
+      const TdcpRow& row = pair.rows[i];
+      const TdcpSignal& s = pair.signals[static_cast<size_t>(row.signal)];
+      const TdcpSignal& ref = pair.signals[static_cast<size_t>(row.ref)];
+      const double res = tdcpObserved(pair, row) -
+                         tdcpPredict(pair, row, a0->second, a1->second, nullptr, nullptr);
+      std::printf("%.3f,%s,%s,%c,%.2f,%.2f,%.5f,%.5f\n", pair.t1, s.sat.str().c_str(),
+                  ref.sat.str().c_str(), s.band, s.el * 180.0 / M_PI, ref.el * 180.0 / M_PI, res,
+                  std::sqrt(C(static_cast<long>(i), static_cast<long>(i))));
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
-  std::string rover_path, base_path, pos_path;
+  std::string rover_path, base_path, pos_path, truth_path;
+  Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();
   std::vector<std::string> nav_paths;
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   DdOptions options;
@@ -41,6 +97,14 @@ int main(int argc, char** argv) {
       pos_path = v;
     else if (k == "--base-pos")
       base_e = parseBasePosition(v);
+    else if (k == "--truth")
+      truth_path = v;
+    else if (k == "--p-b-g" &&
+             std::sscanf(v.c_str(), "%lf,%lf,%lf", &p_b_g.x(), &p_b_g.y(), &p_b_g.z()) != 3) {
+      std::cerr << "giocal_gnss_residuals: --p-b-g takes x,y,z [m]\n";
+      return 2;
+    } else if (k == "--p-b-g")
+      continue;
     else if (k == "--frequencies")
       options.frequencies = std::stoi(v);
     else {
@@ -48,6 +112,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (!truth_path.empty()) return tdcpAtTruth(rover_path, nav_paths, truth_path, p_b_g);
   if (!rover_path.empty() && !nav_paths.empty() && base_path.empty()) {
     std::vector<NavData> navs;
     for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
