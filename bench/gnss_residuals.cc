@@ -155,7 +155,15 @@ int main(int argc, char** argv) {
   options.elevation_mask_deg = 10.0;
   DdEpochBuilder builder(orbits, base_e, options);
   BaseEpochMatcher matcher(base.epochs, 0.5);
-  std::printf("t,sys,sat,ref,band,kind,el_sat_deg,el_ref_deg,residual_m,baseline_m\n");
+  std::printf(
+      "t,sys,sat,ref,band,kind,el_sat_deg,el_ref_deg,residual_m,baseline_m,cn0_sat_rover,"
+      "cn0_sat_base,cn0_ref_rover,cn0_ref_base\n");
+  // The C/N0 of a satellite's best signal on a band (NaN when the file has none).
+  const auto cn0 = [](const ObsEpoch& e, const SatId& sat, char band) {
+    const SatObs* so = e.find(sat);
+    const SignalObs* sig = so ? so->bestOnBand(band) : nullptr;
+    return sig ? sig->S : std::nan("");
+  };
   for (const ObsEpoch& r : rover.epochs) {
     const ObsEpoch* b = matcher.nearest(r.t);
     // Fixed solutions carry the rover's time tag to the millisecond in the .pos.
@@ -170,9 +178,11 @@ int main(int argc, char** argv) {
       const SdGeometry& gr = ep.geometry[static_cast<size_t>(o.ref_index)];
       double res = o.value - ddRange(p, gs, gr, nullptr);
       if (o.phase) res -= o.lambda * std::round(res / o.lambda);
-      std::printf("%.3f,%c,%s,%s,%c,%s,%.2f,%.2f,%.5f,%.1f\n", r.t, static_cast<char>(o.sat.sys),
-                  o.sat.str().c_str(), o.ref.str().c_str(), o.band, o.phase ? "phase" : "code",
-                  gs.el * 180.0 / M_PI, gr.el * 180.0 / M_PI, res, (p - base_e).norm());
+      std::printf("%.3f,%c,%s,%s,%c,%s,%.2f,%.2f,%.5f,%.1f,%.1f,%.1f,%.1f,%.1f\n", r.t,
+                  static_cast<char>(o.sat.sys), o.sat.str().c_str(), o.ref.str().c_str(), o.band,
+                  o.phase ? "phase" : "code", gs.el * 180.0 / M_PI, gr.el * 180.0 / M_PI, res,
+                  (p - base_e).norm(), cn0(r, o.sat, o.band), cn0(*b, o.sat, o.band),
+                  cn0(r, o.ref, o.band), cn0(*b, o.ref, o.band));
     }
   }
   return 0;
