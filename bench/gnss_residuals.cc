@@ -9,7 +9,8 @@
 // constant ambiguity and the slow ionosphere are taken out per arc by gnss_noise_fit.py --cmc).
 // With --rover, --nav and --truth truth.csv --p-b-g x,y,z (a simulated drive): every
 // time-differenced phase row (TdcpBuilder, the single-receiver scheme's) against the true antenna
-// displacement, for checking the TDCP model against the simulator's phases.
+// displacement, for checking the TDCP model against the simulator's phases. With --spp-csv F as
+// well, each epoch's single point position against the true antenna (ENU error and stated sigma).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -25,6 +26,7 @@
 #include "common/gnss/rinex_nav.h"
 #include "common/gnss/rinex_obs.h"
 #include "common/gnss/rtk_job.h"
+#include "common/gnss/spp.h"
 #include "common/gnss/time_differenced_phase.h"
 #include "common/io/sensor_logs.h"
 
@@ -35,7 +37,8 @@ namespace {
 // The TDCP rows of a simulated drive against its truth: t, sat, ref, band, elevations, the
 // residual (observed minus the true displacement's prediction) and the row's stated sigma.
 int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& nav_paths,
-                const std::string& truth_path, const Eigen::Vector3d& p_b_g) {
+                const std::string& truth_path, const Eigen::Vector3d& p_b_g,
+                const std::string& spp_path) {
   std::vector<NavData> navs;
   for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
   const BroadcastOrbits orbits(mergeNav(navs));
@@ -55,10 +58,23 @@ int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& n
   TdcpBuilder builder(orbits);
   std::map<double, Eigen::Vector3d> at;  // antenna by epoch time
   std::printf("t,sat,ref,band,el_sat_deg,el_ref_deg,residual_m,sigma_m\n");
+  FILE* spp_out = spp_path.empty() ? nullptr : std::fopen(spp_path.c_str(), "w");
+  if (spp_out) std::fprintf(spp_out, "t,e_m,n_m,u_m,sd_e_m,sd_n_m,sd_u_m,satellites\n");
   for (const ObsEpoch& r : rover.epochs) {
     Eigen::Vector3d p_e;
     if (!antenna(r.t, p_e)) continue;
     at[r.t] = p_e;
+    if (spp_out) {
+      const SppSolution spp = solveSpp(r, orbits, SppOptions{});
+      if (spp.valid) {
+        const Geodetic g = geodeticFromEcef(p_e);
+        const Eigen::Matrix3d R = rotationEcefFromEnu(g.lat, g.lon);
+        const Eigen::Vector3d d = R.transpose() * (spp.p_e - p_e);
+        const Eigen::Matrix3d C = R.transpose() * spp.cov_p * R;
+        std::fprintf(spp_out, "%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%zu\n", r.t, d.x(), d.y(), d.z(),
+                     std::sqrt(C(0, 0)), std::sqrt(C(1, 1)), std::sqrt(C(2, 2)), spp.used.size());
+      }
+    }
     const TdcpPair pair = builder.add(r, p_e);
     const auto a0 = at.find(pair.t0), a1 = at.find(pair.t1);
     if (pair.rows.empty() || a0 == at.end() || a1 == at.end()) continue;
@@ -74,13 +90,14 @@ int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& n
                   std::sqrt(C(static_cast<long>(i), static_cast<long>(i))));
     }
   }
+  if (spp_out) std::fclose(spp_out);
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string rover_path, base_path, pos_path, truth_path;
+  std::string rover_path, base_path, pos_path, truth_path, spp_path;
   Eigen::Vector3d p_b_g = Eigen::Vector3d::Zero();
   std::vector<std::string> nav_paths;
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
@@ -99,6 +116,8 @@ int main(int argc, char** argv) {
       base_e = parseBasePosition(v);
     else if (k == "--truth")
       truth_path = v;
+    else if (k == "--spp-csv")
+      spp_path = v;
     else if (k == "--p-b-g" &&
              std::sscanf(v.c_str(), "%lf,%lf,%lf", &p_b_g.x(), &p_b_g.y(), &p_b_g.z()) != 3) {
       std::cerr << "giocal_gnss_residuals: --p-b-g takes x,y,z [m]\n";
@@ -112,7 +131,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (!truth_path.empty()) return tdcpAtTruth(rover_path, nav_paths, truth_path, p_b_g);
+  if (!truth_path.empty()) return tdcpAtTruth(rover_path, nav_paths, truth_path, p_b_g, spp_path);
   if (!rover_path.empty() && !nav_paths.empty() && base_path.empty()) {
     std::vector<NavData> navs;
     for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
