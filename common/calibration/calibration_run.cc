@@ -230,6 +230,18 @@ std::string summaryJson(const CalibrationRun& run, const OdometerCalibration* tr
                          {"correlation_s", r.correlation_s},
                          {"fixes_per_independent", r.inflation},
                          {"sigmas_understated_by", r.understatedBy()}};
+    // The calibration's sigmas as far as these fixes support them: the run's own times the
+    // factor it measured (its sigmas take every fix as independent; the fixes' errors are not).
+    if (j["sd"].is_object() && r.understatedBy() > 1.0) {
+      auto& supported = j["sd_supported"];
+      supported = j["sd"];
+      for (auto& [key, value] : supported.items()) {
+        if (value.is_number()) value = value.get<double>() * r.understatedBy();
+        if (value.is_array()) {
+          for (auto& x : value) x = x.get<double>() * r.understatedBy();
+        }
+      }
+    }
   }
   if (!run.robot.empty()) j["robot"] = run.robot;
   if (run.validation) {

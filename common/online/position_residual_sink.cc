@@ -12,7 +12,7 @@ std::string understatedSigmaWarning(const PositionResiduals& r) {
          " fixes count as one): the calibration's sigmas are likely about " +
          fixedText(r.understatedBy(), 0) +
          " times too small; the two estimators may disagree by more than their sigmas "
-         "(summary.json: lc_residuals)";
+         "(summary.json: lc_residuals, and sd_supported: the sigmas times that factor)";
 }
 
 }  // namespace giocal
