@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "common/calibration/reference_trajectory.h"
 #include "common/geodesy/wgs84.h"
 #include "common/gnss/atmosphere.h"
 #include "common/gnss/dd_epoch.h"
@@ -34,25 +35,26 @@ using namespace giocal;
 
 namespace {
 
+NavData readNavs(const std::vector<std::string>& paths) {
+  std::vector<NavData> navs;
+  for (const auto& n : paths) navs.push_back(readRinexNav(n));
+  return mergeNav(navs);
+}
+
 // The TDCP rows of a simulated drive against its truth: t, sat, ref, band, elevations, the
 // residual (observed minus the true displacement's prediction) and the row's stated sigma.
 int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& nav_paths,
                 const std::string& truth_path, const Eigen::Vector3d& p_b_g,
                 const std::string& spp_path) {
-  std::vector<NavData> navs;
-  for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
-  const BroadcastOrbits orbits(mergeNav(navs));
+  const BroadcastOrbits orbits(readNavs(nav_paths));
   const ObsData rover = readRinexObs(rover_path);
   const std::vector<TruthSample> truth = readTruthCsv(truth_path);
   size_t k = 0;
   // The antenna (ECEF) at the truth row nearest t.
   const auto antenna = [&](double t, Eigen::Vector3d& p_e) {
     while (k + 1 < truth.size() && std::abs(truth[k + 1].t - t) <= std::abs(truth[k].t - t)) ++k;
-    const TruthSample& s = truth[k];
-    if (std::abs(s.t - t) > 1e-3) return false;
-    const double lat = s.lat_deg * M_PI / 180.0, lon = s.lon_deg * M_PI / 180.0;
-    p_e = ecefFromGeodetic({lat, lon, s.h}) +
-          rotationEcefFromEnu(lat, lon) * (s.q_n_b.toRotationMatrix() * p_b_g);
+    if (std::abs(truth[k].t - t) > 1e-3) return false;
+    p_e = antennaOfRow(truth[k], p_b_g);
     return true;
   };
   TdcpBuilder builder(orbits);
@@ -118,13 +120,12 @@ int main(int argc, char** argv) {
       truth_path = v;
     else if (k == "--spp-csv")
       spp_path = v;
-    else if (k == "--p-b-g" &&
-             std::sscanf(v.c_str(), "%lf,%lf,%lf", &p_b_g.x(), &p_b_g.y(), &p_b_g.z()) != 3) {
-      std::cerr << "giocal_gnss_residuals: --p-b-g takes x,y,z [m]\n";
-      return 2;
-    } else if (k == "--p-b-g")
-      continue;
-    else if (k == "--frequencies")
+    else if (k == "--p-b-g") {
+      if (std::sscanf(v.c_str(), "%lf,%lf,%lf", &p_b_g.x(), &p_b_g.y(), &p_b_g.z()) != 3) {
+        std::cerr << "giocal_gnss_residuals: --p-b-g takes x,y,z [m]\n";
+        return 2;
+      }
+    } else if (k == "--frequencies")
       options.frequencies = std::stoi(v);
     else {
       std::cerr << "giocal_gnss_residuals: unknown option " << k << "\n";
@@ -133,9 +134,7 @@ int main(int argc, char** argv) {
   }
   if (!truth_path.empty()) return tdcpAtTruth(rover_path, nav_paths, truth_path, p_b_g, spp_path);
   if (!rover_path.empty() && !nav_paths.empty() && base_path.empty()) {
-    std::vector<NavData> navs;
-    for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
-    const BroadcastOrbits orbits(mergeNav(navs));
+    const BroadcastOrbits orbits(readNavs(nav_paths));
     const ObsData rover = readRinexObs(rover_path);
     const Eigen::Vector3d p = rover.header.approx_position;
     const Topocentric sky(p);
@@ -162,9 +161,7 @@ int main(int argc, char** argv) {
                  "--pos fixed.pos\n";
     return 2;
   }
-  std::vector<NavData> navs;
-  for (const auto& n : nav_paths) navs.push_back(readRinexNav(n));
-  const BroadcastOrbits orbits(mergeNav(navs));
+  const BroadcastOrbits orbits(readNavs(nav_paths));
   const ObsData rover = readRinexObs(rover_path);
   const ObsData base = readRinexObs(base_path);
   std::map<long long, Eigen::Vector3d> fixed;  // by rover time in milliseconds
