@@ -94,9 +94,23 @@ std::vector<std::pair<char, char>> simulatedSignals(GnssSystem sys) {
       return {{'1', 'C'}, {'7', 'Q'}};
     case GnssSystem::kBeidou:
       return {{'2', 'I'}, {'7', 'I'}};
+    case GnssSystem::kQzss:
+      return {{'1', 'C'}, {'2', 'L'}};
     default:
       return {};
   }
+}
+
+std::vector<SignalSpec> receiverSignals(const GnssSimSpec& spec, int receiver, GnssSystem sys) {
+  std::vector<SignalSpec> out;
+  if (receiver == 1) {
+    for (const SignalSpec& s : spec.base_signals) {
+      if (s.sys == sys) out.push_back(s);
+    }
+    if (!out.empty()) return out;
+  }
+  for (const auto& [band, attr] : simulatedSignals(sys)) out.push_back({sys, band, attr});
+  return out;
 }
 
 SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbits,
@@ -104,6 +118,13 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
                            double t1, std::mt19937_64& rng) {
   SimulatedGnss out;
   out.base_e = base_e;
+  out.base_phase_aligned = spec.base_phase_aligned;
+  for (int r = 0; r < 2; ++r) {
+    for (const char sys : spec.systems) {
+      const std::vector<SignalSpec> s = receiverSignals(spec, r, static_cast<GnssSystem>(sys));
+      out.signals[r].insert(out.signals[r].end(), s.begin(), s.end());
+    }
+  }
   std::vector<SatId> sats;
   for (const Ephemeris& e : orbits.nav().ephemerides) {
     if (spec.systems.find(static_cast<char>(e.sat.sys)) == std::string::npos) continue;
@@ -191,9 +212,13 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           }
         }
         if (blocked) continue;
-        for (const auto& [band, attr] : simulatedSignals(sat.sys)) {
+        for (const SignalSpec& sig : receiverSignals(spec, r, sat.sys)) {
+          const char band = sig.band;
           Geometry g;
-          if (!geometry(orbits, sat, t_true, p, v, band, g) || g.el < mask) continue;
+          if (!geometry(orbits, sat, t_true, p, v, band, g) || g.el < mask ||
+              g.el < sig.min_elevation_deg * M_PI / 180.0) {
+            continue;
+          }
           const double f = carrierFrequency(sat.sys, band);
           const double lambda = kSpeedOfLight / f;
           const double iono = ionosphereL1(vtec, g.el) * std::pow(1575.42e6 / f, 2);
@@ -208,7 +233,7 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           if (!out.ambiguity.count(key)) out.ambiguity[key] = amb(rng);
           SignalObs s;
           s.band = band;
-          s.attr = attr;
+          s.attr = sig.attr;
           if (scene && u01(rng) < scene->slip_probability) {
             if (spec.half_cycle_share > 0 && u01(rng_alone) < spec.half_cycle_share) {
               out.ambiguity[key] += 0.5;  // a half cycle, flagged while unresolved
@@ -226,6 +251,9 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           s.L =
               (common - iono + extra + mp.phase + gauss(rng, spec.phase_sigma * factor)) / lambda +
               out.ambiguity[key];
+          // The raw phase sits its correction short of the band's reference; a file that aligns
+          // adds it back (and records it), one that does not keeps the raw phase.
+          if (!spec.base_phase_aligned) s.L -= sig.shift_cycles;
           s.D = -(g.range_rate + g.u.dot(be.orbit_rate) +
                   kSpeedOfLight * (rc.drift - g.clock_drift)) /
                     lambda +

@@ -37,6 +37,16 @@ struct SceneSpec {
 /// The defaults of a scene type (the four scenes of the reference paper's field test).
 SceneSpec sceneDefaults(const std::string& type);
 
+/// A signal a receiver tracks: its band and attribute, the phase-shift correction RINEX 3.01+
+/// records for it (the quarter cycles its raw phase sits from the band's reference signal, added
+/// to align it), and the elevation below which it is not tracked (a semi-codeless L2W low down).
+struct SignalSpec {
+  GnssSystem sys = GnssSystem::kGps;
+  char band = '1', attr = 'C';
+  double shift_cycles = 0.0;
+  double min_elevation_deg = 0.0;
+};
+
 struct GnssSimSpec {
   bool enabled = false;  // set when the config has a gnss section
   std::string nav_file;  // broadcast orbits (RINEX nav), resolved to an absolute path
@@ -56,6 +66,13 @@ struct GnssSimSpec {
   double vtec_tecu = 15.0;           // vertical TEC at the origin [TECU]
   double vtec_gradient = 5e-7;       // relative VTEC change per metre (0.5 ppm/m: 4 km -> 0.2 %)
   std::vector<SceneSpec> scenes;     // the rover's scenes; open sky where none applies
+  // gnss.base_signals: a base of another make, tracking these signals of each system it lists
+  // (several on one band share the band's integer); the rover's signals where none is listed.
+  std::vector<SignalSpec> base_signals;
+  // gnss.base_phase_aligned: the base's file holds phases aligned to each band's reference and
+  // records the corrections (SYS / PHASE SHIFT), as RINEX 3.01+ requires; 0: its raw phases, each
+  // signal off by its correction, and no record (a converter that does not align).
+  bool base_phase_aligned = true;
   // gnss.base: none: a rover alone, no base receiver written. Then what a single receiver meets
   // and a base would cancel is on by default (gnss_sim_config's defaults; 0 turns one off):
   bool base = true;
@@ -87,6 +104,9 @@ struct SimulatedGnss {
   int slips = 0;        // cycle slips put into the rover's phases by scenes
   int half_cycles = 0;  // of them half-cycle slips
   int clock_steps = 0;  // receiver clock steps (clock_step_s)
+  /// The signals each receiver's file holds (0 rover, 1 base), in the order it writes them.
+  std::vector<SignalSpec> signals[2];
+  bool base_phase_aligned = true;
 };
 
 /// Observations at t0, t0 + 1/rate, ... up to t1 (receiver time tags at whole steps).
@@ -94,7 +114,10 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
                            const AntennaTruth& rover, const Eigen::Vector3d& base_e, double t0,
                            double t1, std::mt19937_64& rng);
 
-/// Signals simulated per system: (band, attribute).
+/// Signals simulated per system for the rover (and a base of the same make): (band, attribute).
 std::vector<std::pair<char, char>> simulatedSignals(GnssSystem sys);
+
+/// The signals a receiver (0 rover, 1 base) tracks of system `sys`.
+std::vector<SignalSpec> receiverSignals(const GnssSimSpec& spec, int receiver, GnssSystem sys);
 
 }  // namespace giocal::sim

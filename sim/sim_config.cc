@@ -1,5 +1,6 @@
 #include "sim/sim_config.h"
 
+#include <cctype>
 #include <filesystem>
 
 #include "common/io/data_error.h"
@@ -7,6 +8,39 @@
 #include "common/math/rotation.h"
 
 namespace giocal::sim {
+
+namespace {
+
+// gnss.base_signals: [{signal: G2X, shift_cycles: -0.25, min_elevation_deg: 0}, ...].
+std::vector<SignalSpec> readBaseSignals(const std::string& path, const YamlFields& y,
+                                        const std::string& systems) {
+  const YAML::Node list = y.root()["gnss"]["base_signals"];
+  if (!list.IsSequence()) y.fail("gnss.base_signals", "needs a list of {signal: G2X, ...}");
+  std::vector<SignalSpec> out;
+  for (size_t i = 0; i < list.size(); ++i) {
+    YAML::Node wrapper;
+    wrapper["s"] = list[i];
+    const YamlFields f(path, wrapper);
+    const std::string code = f.text("s.signal");
+    SignalSpec sig;
+    if (code.size() != 3 || systems.find(code[0]) == std::string::npos ||
+        carrierFrequency(static_cast<GnssSystem>(code[0]), code[1]) == 0.0 ||
+        !std::isupper(static_cast<unsigned char>(code[2]))) {
+      f.fail("s.signal", "'" + code + "' is not a system of gnss.systems, a band and an attribute"
+                         " (G2X, J1C, ...)");
+    }
+    sig.sys = static_cast<GnssSystem>(code[0]);
+    sig.band = code[1];
+    sig.attr = code[2];
+    sig.shift_cycles = f.numberOr("s.shift_cycles", 0.0, -0.5, 0.5);
+    sig.min_elevation_deg = f.numberOr("s.min_elevation_deg", 0.0, 0.0, 90.0);
+    f.rejectUnknownKeys();
+    out.push_back(sig);
+  }
+  return out;
+}
+
+}  // namespace
 
 SimConfig readSimConfig(const std::string& path) {
   const YamlFields y(path);
@@ -108,8 +142,8 @@ SimConfig readSimConfig(const std::string& path) {
     if (!std::filesystem::exists(g.nav_file)) y.fail("gnss.nav_file", "no file " + g.nav_file);
     g.systems = y.textOr("gnss.systems", g.systems);
     for (char sys : g.systems) {
-      if (sys != 'G' && sys != 'E' && sys != 'C')
-        y.fail("gnss.systems", "letters must be among G, E, C");
+      if (sys != 'G' && sys != 'E' && sys != 'C' && sys != 'J')
+        y.fail("gnss.systems", "letters must be among G, E, C, J");
     }
     g.beidou_meo_only = y.numberOr("gnss.beidou_meo_only", g.beidou_meo_only ? 1 : 0, 0, 1) != 0.0;
     g.rate_hz = y.numberOr("gnss.rate_hz", g.rate_hz, 0.01, 100.0);
@@ -145,6 +179,9 @@ SimConfig readSimConfig(const std::string& path) {
     g.zenith_wet_sd = y.numberOr("gnss.zenith_wet_sd", g.zenith_wet_sd, 0.0, 1.0);
     g.vtec_tecu = y.numberOr("gnss.vtec_tecu", g.vtec_tecu, 0.0, 300.0);
     g.vtec_gradient = y.numberOr("gnss.vtec_gradient", g.vtec_gradient, 0.0, 1e-4);
+    if (y.has("gnss.base_signals")) g.base_signals = readBaseSignals(path, y, g.systems);
+    g.base_phase_aligned =
+        y.numberOr("gnss.base_phase_aligned", g.base_phase_aligned ? 1 : 0, 0, 1) != 0.0;
     if (y.has("gnss.scenes")) {
       const YAML::Node scenes = y.root()["gnss"]["scenes"];
       if (!scenes.IsSequence()) y.fail("gnss.scenes", "needs a list of scenes");

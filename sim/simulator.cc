@@ -209,20 +209,29 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
   writeTruthCalibration(folder + "/truth_calib.yaml", logs.truth_calib);
   if (!logs.scenes.empty()) writeScenesCsv(folder + "/scenes.csv", logs.scenes);
   if (!logs.gnss.rover.empty()) {
-    RinexObsHeader h;
-    for (const auto& [sat_sys, letter] : {std::pair<GnssSystem, char>{GnssSystem::kGps, 'G'},
-                                          {GnssSystem::kGalileo, 'E'},
-                                          {GnssSystem::kBeidou, 'C'}}) {
-      for (const auto& [band, attr] : simulatedSignals(sat_sys)) {
-        for (char type : {'C', 'L', 'D', 'S'}) h.obs_types[letter].push_back({type, band, attr});
+    // Each receiver's file lists the signals it tracks; the base's records the phase-shift
+    // corrections it applied (a base of another make, gnss.base_signals).
+    const auto headerOf = [&](int receiver) {
+      RinexObsHeader h;
+      for (const SignalSpec& s : logs.gnss.signals[receiver]) {
+        const char sys = static_cast<char>(s.sys);
+        for (char type : {'C', 'L', 'D', 'S'})
+          h.obs_types[sys].push_back({type, s.band, s.attr});
+        if (receiver == 1 && logs.gnss.base_phase_aligned && s.shift_cycles != 0.0)
+          h.phase_shift[{sys, std::string{'L', s.band, s.attr}}] = s.shift_cycles;
       }
-    }
+      return h;
+    };
+    RinexObsHeader h = headerOf(0);
     h.interval = logs.gnss.rover.size() > 1 ? logs.gnss.rover[1].t - logs.gnss.rover[0].t : 1.0;
     h.marker = "ROVER";
     // A receiver's own approximate position: the first antenna position, metres off.
     h.approx_position = logs.antenna_e.front() + Eigen::Vector3d(2.0, -3.0, 1.5);
     writeRinexObs(d.pathOf(d.rover_obs), h, logs.gnss.rover);
     if (!d.base_obs.empty()) {
+      const double interval = h.interval;
+      h = headerOf(1);
+      h.interval = interval;
       h.marker = "BASE";
       h.approx_position = logs.gnss.base_e;
       writeRinexObs(d.pathOf(d.base_obs), h, logs.gnss.base);

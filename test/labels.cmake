@@ -35,6 +35,7 @@ set(GIOCAL_SLOW_TESTS
   RealMovedRover.GsiTrimbleRoverMovedAlongTheFieldDriveFixesAndCalibrates
 )
 set(GIOCAL_REAL_TESTS
+  BroadcastOrbitsHealth.QzssLastBitIsMaskedAnyOtherBitExcludes
   Tdcp.TheRowsGradientsAreTheNumericOnes
   Tdcp.ADisplacementThroughAClockStepASlipAndAHalfCycleIsRecovered
   Tdcp.StaticRoversOfTheRealPairsStayPutAsSingleReceivers

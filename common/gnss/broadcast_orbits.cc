@@ -21,6 +21,15 @@ double validity(GnssSystem sys) {
   }
 }
 
+// The satellite's ranging signals are usable. QZSS LNAV's six health bits are one per signal;
+// the last flags a signal giocal does not use (LEX/L6 in IS-QZSS 1.x, L1C/B in IS-QZSS-PNT), and
+// operating Michibiki satellites broadcast it set (health 1: the mosaic pair's nav file), so it
+// is masked, as RTKLIB does. Any other nonzero health excludes the satellite.
+bool healthy(const Ephemeris& e) {
+  const int mask = e.sat.sys == GnssSystem::kQzss ? ~1 : ~0;
+  return (e.health & mask) == 0;
+}
+
 }  // namespace
 
 double groupDelay(const Ephemeris& eph, char band) {
@@ -80,7 +89,7 @@ const Ephemeris* BroadcastOrbits::select(const SatId& sat, double t) const {
   const Ephemeris* best = nullptr;
   double best_dt = validity(sat.sys);
   for (const Ephemeris* e : it->second) {
-    if (e->health != 0) continue;
+    if (!healthy(*e)) continue;
     // Galileo: prefer I/NAV (E1/E5b) records; F/NAV only when no I/NAV record is near.
     const double penalty =
         (sat.sys == GnssSystem::kGalileo && (e->data_source & 5) == 0) ? 3600.0 : 0.0;

@@ -55,8 +55,11 @@ void writeRinexObs(const std::string& path, const RinexObsHeader& h,
   }
   for (const auto& [sys, types] : h.obs_types) {
     for (const auto& t : types) {
-      if (t[0] == 'L')
-        out << headerLine(std::string(1, sys) + " " + t + "  0.00000", "SYS / PHASE SHIFT");
+      if (t[0] != 'L') continue;
+      const auto shift = h.phase_shift.find({sys, t});
+      std::snprintf(buf, sizeof(buf), "%c %s %8.5f", sys, t.c_str(),
+                    shift == h.phase_shift.end() ? 0.0 : shift->second);
+      out << headerLine(buf, "SYS / PHASE SHIFT");
     }
   }
   std::snprintf(buf, sizeof(buf), "%10.3f", h.interval);

@@ -17,6 +17,8 @@ struct RinexObsHeader {
   Eigen::Vector3d approx_position = Eigen::Vector3d::Zero();
   double interval = 1.0;
   std::map<char, std::vector<std::string>> obs_types;  // system -> codes ("C1C", "L1C", ...)
+  // SYS / PHASE SHIFT: (system, phase code) -> the correction applied [cycles]; 0 where absent.
+  std::map<std::pair<char, std::string>, double> phase_shift;
 };
 
 /// Writes `epochs` atomically; observations absent from a signal are left blank.

@@ -67,6 +67,34 @@ TEST(Spp, MosaicMultiConstellationWithinFiveMetresAndStaticDoppler) {
   EXPECT_LT(std::sqrt(st.vel_sq / st.vel_n), 0.05);
 }
 
+// Operating Michibiki satellites broadcast health 1: the last of QZSS LNAV's six signal health
+// bits (LEX/L6, or L1C/B), none of the signals giocal uses. Any other bit, or a GPS satellite's
+// health 1, still excludes the ephemeris.
+TEST(BroadcastOrbitsHealth, QzssLastBitIsMaskedAnyOtherBitExcludes) {
+  const NavData nav = readRinexNav(kData + "mosaic-static-nagoya/base.nav");
+  const Ephemeris* q = nullptr;
+  const Ephemeris* g = nullptr;
+  for (const Ephemeris& e : nav.ephemerides) {
+    if (e.sat.sys == GnssSystem::kQzss && !q) q = &e;
+    if (e.sat.sys == GnssSystem::kGps && e.health == 0 && !g) g = &e;
+  }
+  ASSERT_TRUE(q && g);
+  EXPECT_EQ(q->health, 1);  // as broadcast
+  const auto usable = [](Ephemeris e, int health) {
+    e.health = health;
+    NavData one;
+    one.ephemerides.push_back(e);
+    return BroadcastOrbits(one).select(e.sat, e.toe) != nullptr;
+  };
+  EXPECT_TRUE(usable(*q, 0));
+  EXPECT_TRUE(usable(*q, 1));
+  EXPECT_FALSE(usable(*q, 2));
+  EXPECT_FALSE(usable(*q, 32));  // L1C/A
+  EXPECT_FALSE(usable(*q, 33));
+  EXPECT_TRUE(usable(*g, 0));
+  EXPECT_FALSE(usable(*g, 1));
+}
+
 TEST(Spp, MosaicGpsOnly) {
   const Geodetic truth{35.13469901 * kDegToRad, 136.97757549 * kDegToRad, 104.8626};
   const Stats st = runSpp(kData + "mosaic-static-nagoya/rover.obs",

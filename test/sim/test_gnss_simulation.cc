@@ -206,5 +206,100 @@ TEST(GnssSimulation, GiocalRtkFixesUnderTreesAreWithin5cm) {
   EXPECT_LE(c.fixed - c.within, c.fixed / 100);
 }
 
+// A base of another make (the 5.3 km pair's Trimble against its Septentrio rover): the base
+// tracks GPS L2 as semi-codeless L2W above 25 degrees and as L2C (L2X) everywhere, QZSS L1 as
+// L1C/A and L1C (L1X). Its file lists those signals and records the phase-shift corrections.
+sim::SimConfig paperWithBaseOfAnotherMake(bool aligned) {
+  sim::SimConfig cfg = paper();
+  cfg.gnss.systems = "GECJ";
+  cfg.gnss.base_signals = {{GnssSystem::kGps, '1', 'C'},
+                           {GnssSystem::kGps, '2', 'W', 0.0, 25.0},
+                           {GnssSystem::kGps, '2', 'X', -0.25},
+                           {GnssSystem::kQzss, '1', 'C'},
+                           {GnssSystem::kQzss, '1', 'X', 0.25},
+                           {GnssSystem::kQzss, '2', 'X'}};
+  cfg.gnss.base_phase_aligned = aligned;
+  return cfg;
+}
+
+TEST(GnssSimulation, ABaseOfAnotherMakeWritesItsSignalsAndPhaseShifts) {
+  for (const bool aligned : {true, false}) {
+    SCOPED_TRACE(aligned ? "aligned" : "raw phases");
+    test::TempDir dir;
+    const sim::SimulatedLogs logs = sim::simulate(paperWithBaseOfAnotherMake(aligned), 4);
+    sim::writeDataset(logs, dir.file("d"));
+    const ObsData base = readRinexObs(dir.file("d/base.obs"));
+    const ObsData rover = readRinexObs(dir.file("d/rover.obs"));
+    EXPECT_EQ(base.header.obs_types.at('G'),
+              (std::vector<std::string>{"C1C", "L1C", "D1C", "S1C", "C2W", "L2W", "D2W", "S2W",
+                                        "C2X", "L2X", "D2X", "S2X"}));
+    EXPECT_EQ(rover.header.obs_types.at('G'),
+              (std::vector<std::string>{"C1C", "L1C", "D1C", "S1C", "C2W", "L2W", "D2W", "S2W"}));
+    EXPECT_EQ(rover.header.obs_types.at('J'),
+              (std::vector<std::string>{"C1C", "L1C", "D1C", "S1C", "C2L", "L2L", "D2L", "S2L"}));
+    // The record states the correction applied; a file of raw phases records none.
+    const auto shift = [&](char sys, const char* code) {
+      const auto it = base.header.phase_shift.find({sys, code});
+      return it == base.header.phase_shift.end() ? 0.0 : it->second;
+    };
+    EXPECT_EQ(shift('G', "L2X"), aligned ? -0.25 : 0.0);
+    EXPECT_EQ(shift('J', "L1X"), aligned ? 0.25 : 0.0);
+    EXPECT_EQ(shift('G', "L2W"), 0.0);
+    // Two signals of one band at one receiver: the same integer, so their phases differ by the
+    // noise when aligned and by the raw offset (minus the correction) when not.
+    int both = 0, x_only = 0, qzss = 0;
+    double diff_sum = 0.0;
+    for (const ObsEpoch& e : base.epochs) {
+      for (const SatObs& s : e.sats) {
+        qzss += s.sat.sys == GnssSystem::kQzss;
+        if (s.sat.sys != GnssSystem::kGps) continue;
+        const SignalObs *w = nullptr, *x = nullptr;
+        for (const SignalObs& g : s.signals) {
+          if (g.band == '2' && g.attr == 'W') w = &g;
+          if (g.band == '2' && g.attr == 'X') x = &g;
+        }
+        ASSERT_NE(x, nullptr) << s.sat.str();
+        x_only += w == nullptr;  // below 25 degrees
+        if (!w) continue;
+        ++both;
+        diff_sum += x->L - w->L;
+        EXPECT_NEAR(x->L - w->L, aligned ? 0.0 : 0.25, 0.1) << s.sat.str();
+      }
+    }
+    EXPECT_GT(both, 500);
+    EXPECT_GT(x_only, 100);
+    EXPECT_GT(qzss, 100);  // Michibiki's ephemerides (health 1) are used
+    EXPECT_NEAR(diff_sum / both, aligned ? 0.0 : 0.25, 0.01);
+  }
+}
+
+// giocal rtk against such a base: with aligned phases (what RINEX 3.01 and later require) it
+// fixes as against a base of its own make; with raw phases a satellite whose base signal differs
+// from its group's by a quarter cycle cannot fix, and the fix is withheld rather than wrong.
+TEST(GnssSimulation, GiocalRtkFixesAgainstABaseOfAnotherMake) {
+  test::TempDir dir;
+  sim::SimConfig same = paper();
+  same.gnss.systems = "GECJ";
+  FixCount c[3];
+  const sim::SimConfig cfgs[3] = {same, paperWithBaseOfAnotherMake(true),
+                                  paperWithBaseOfAnotherMake(false)};
+  for (int k = 0; k < 3; ++k) {
+    const sim::SimulatedLogs logs = sim::simulate(cfgs[k], 4);
+    const std::string d = dir.file("d" + std::to_string(k));
+    sim::writeDataset(logs, d);
+    runRtk(rtkJob(d, logs.gnss.base_e, d + "/giocal.pos"));
+    c[k] = countFixes(logs, d + "/giocal.pos", 0.05);
+  }
+  std::cout << "paper preset seed 4, GPS+Galileo+BeiDou+QZSS: fixed " << c[0].fixed << " of "
+            << c[0].epochs << " against a base of the rover's make, " << c[1].fixed
+            << " against another make (aligned phases), " << c[2].fixed
+            << " (raw phases); more than 5 cm off: " << c[0].fixed - c[0].within << ", "
+            << c[1].fixed - c[1].within << ", " << c[2].fixed - c[2].within << "\n";
+  EXPECT_GE(c[0].fixed, c[0].epochs * 95 / 100);
+  EXPECT_GE(c[1].fixed, c[0].fixed - 1);
+  EXPECT_LT(c[2].fixed, c[1].fixed);  // the raw offsets are in the data: the check can fail
+  for (const FixCount& x : c) EXPECT_EQ(x.fixed, x.within);
+}
+
 }  // namespace
 }  // namespace giocal
