@@ -26,8 +26,9 @@ std::vector<SignalSpec> readBaseSignals(const std::string& path, const YamlField
     if (code.size() != 3 || systems.find(code[0]) == std::string::npos ||
         carrierFrequency(static_cast<GnssSystem>(code[0]), code[1]) == 0.0 ||
         !std::isupper(static_cast<unsigned char>(code[2]))) {
-      f.fail("s.signal", "'" + code + "' is not a system of gnss.systems, a band and an attribute"
-                         " (G2X, J1C, ...)");
+      f.fail("s.signal", "'" + code +
+                             "' is not a system of gnss.systems, a band and an attribute"
+                             " (G2X, J1C, ...)");
     }
     sig.sys = static_cast<GnssSystem>(code[0]);
     sig.band = code[1];

@@ -215,8 +215,7 @@ void writeDataset(const SimulatedLogs& logs, const std::string& folder) {
       RinexObsHeader h;
       for (const SignalSpec& s : logs.gnss.signals[receiver]) {
         const char sys = static_cast<char>(s.sys);
-        for (char type : {'C', 'L', 'D', 'S'})
-          h.obs_types[sys].push_back({type, s.band, s.attr});
+        for (char type : {'C', 'L', 'D', 'S'}) h.obs_types[sys].push_back({type, s.band, s.attr});
         if (receiver == 1 && logs.gnss.base_phase_aligned && s.shift_cycles != 0.0)
           h.phase_shift[{sys, std::string{'L', s.band, s.attr}}] = s.shift_cycles;
       }

@@ -212,12 +212,10 @@ TEST(GnssSimulation, GiocalRtkFixesUnderTreesAreWithin5cm) {
 sim::SimConfig paperWithBaseOfAnotherMake(bool aligned) {
   sim::SimConfig cfg = paper();
   cfg.gnss.systems = "GECJ";
-  cfg.gnss.base_signals = {{GnssSystem::kGps, '1', 'C'},
-                           {GnssSystem::kGps, '2', 'W', 0.0, 25.0},
-                           {GnssSystem::kGps, '2', 'X', -0.25},
-                           {GnssSystem::kQzss, '1', 'C'},
-                           {GnssSystem::kQzss, '1', 'X', 0.25},
-                           {GnssSystem::kQzss, '2', 'X'}};
+  cfg.gnss.base_signals = {
+      {GnssSystem::kGps, '1', 'C'},        {GnssSystem::kGps, '2', 'W', 0.0, 25.0},
+      {GnssSystem::kGps, '2', 'X', -0.25}, {GnssSystem::kQzss, '1', 'C'},
+      {GnssSystem::kQzss, '1', 'X', 0.25}, {GnssSystem::kQzss, '2', 'X'}};
   cfg.gnss.base_phase_aligned = aligned;
   return cfg;
 }
