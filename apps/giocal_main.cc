@@ -140,6 +140,7 @@ int runRtkCommand(int argc, char** argv) {
   const giocal::InterruptWatch interrupts;
   job.stop = interrupts.stop();
   const giocal::RtkSummary s = giocal::runRtk(job);
+  for (const std::string& w : s.warnings) std::cout << "  warning: " << w << "\n";
   std::cout << "giocal rtk: " << s.epochs << " epochs, " << s.fixed << " fixed ("
             << (s.epochs ? 100.0 * s.fixed / s.epochs : 0.0) << " %), " << s.floats << " float, "
             << s.single << " single; " << s.wall_s << " s for " << s.data_s << " s of data -> "

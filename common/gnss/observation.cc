@@ -5,16 +5,19 @@
 
 namespace giocal {
 
-const SignalObs* SatObs::bestOnBand(char band) const {
+int attributeRank(char attr) {
   // Attributes in order of preference: civil/open codes first, then semi-codeless, then the rest.
   static const std::string kOrder = "CWPLSXQIDBZAM";
+  const auto pos = kOrder.find(attr);
+  return static_cast<int>(pos == std::string::npos ? 50 : pos);
+}
+
+const SignalObs* SatObs::bestOnBand(char band) const {
   const SignalObs* best = nullptr;
   int best_rank = 1 << 20;
   for (const SignalObs& s : signals) {
     if (s.band != band || std::isnan(s.P)) continue;
-    const auto pos = kOrder.find(s.attr);
-    const int rank =
-        (std::isnan(s.L) ? 100 : 0) + static_cast<int>(pos == std::string::npos ? 50 : pos);
+    const int rank = (std::isnan(s.L) ? 100 : 0) + attributeRank(s.attr);
     if (rank < best_rank) {
       best_rank = rank;
       best = &s;

@@ -23,6 +23,10 @@ struct SignalObs {
   int lli = 0;  // loss of lock indicator of the phase: bit 0 slip, bit 1 half-cycle ambiguity
 };
 
+/// A tracking attribute's place in the order of preference of one band's signals (lower first):
+/// civil and open codes, then semi-codeless, then the rest.
+int attributeRank(char attr);
+
 struct SatObs {
   SatId sat;
   std::vector<SignalObs> signals;

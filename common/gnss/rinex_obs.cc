@@ -157,6 +157,7 @@ struct RinexObsReader::State {
   double time_offset = 0.0;  // added to epoch times to get GPS time
   double last_t = -1e300;
   int skipped = 0;
+  PhaseAlignment alignment;
   // Recoverable damage dropped: epochs repeating or going back in time, a cut last epoch.
   long out_of_order = 0, first_out_of_order = 0, bad_run = 0;
   long cut_epoch_line = 0;
@@ -181,10 +182,13 @@ std::vector<std::string> RinexObsReader::warnings() const {
     out.push_back(path + ":" + std::to_string(s_->cut_epoch_line) +
                   ": the file ends inside this epoch (a recording cut short): epoch dropped");
   }
+  const std::vector<std::string>& aligned = s_->alignment.warnings();
+  out.insert(out.end(), aligned.begin(), aligned.end());
   return out;
 }
 
-RinexObsReader::RinexObsReader(const std::string& path) : s_(std::make_unique<State>(path)) {
+RinexObsReader::RinexObsReader(const std::string& path, bool align)
+    : s_(std::make_unique<State>(path)) {
   Reader& r = s_->r;
   ObsHeader& h = s_->h;
   char& file_sys = s_->file_sys;
@@ -252,6 +256,20 @@ RinexObsReader::RinexObsReader(const std::string& path) : s_(std::make_unique<St
     auto& types = h.obs_types[file_sys == 'M' ? 'G' : file_sys];
     for (const auto& t : v2_types) types.push_back(codeFromV2(t));
   }
+  if (align && hasSeveralPhasesOnABand(h)) {
+    // A first pass for the alignment check; damage it meets is left to the reading to report.
+    RinexObsReader scan(path, false);
+    ObsEpoch e;
+    try {
+      while (scan.next(e)) s_->alignment.add(e);
+    } catch (const DataError&) {
+    }
+    s_->alignment.decide(path);
+  }
+}
+
+const std::vector<SignalOffset>& RinexObsReader::phaseOffsets() const {
+  return s_->alignment.offsets();
 }
 
 bool RinexObsReader::next(ObsEpoch& out) {
@@ -262,6 +280,7 @@ bool RinexObsReader::next(ObsEpoch& out) {
       if (out.t > s_->last_t) {
         s_->last_t = out.t;
         s_->bad_run = 0;
+        s_->alignment.apply(out);
         return true;
       }
       // One epoch repeated or out of order is dropped; a run of them is a clock jump or a broken

@@ -7,14 +7,17 @@
 #include <vector>
 
 #include "common/gnss/observation.h"
+#include "common/gnss/phase_alignment.h"
 
 namespace giocal {
 
 /// Reads an observation file epoch by epoch (constant memory): the header on construction, then
-/// one epoch per next(). Same checks as readRinexObs().
+/// one epoch per next(). Same checks as readRinexObs(). Where a band has several phase signals,
+/// the construction reads the file once more to check that they are aligned (phase_alignment.h)
+/// and next() aligns a signal a quarter or half cycle off, with a warning.
 class RinexObsReader {
  public:
-  explicit RinexObsReader(const std::string& path);
+  explicit RinexObsReader(const std::string& path) : RinexObsReader(path, true) {}
   ~RinexObsReader();
   RinexObsReader(const RinexObsReader&) = delete;
   RinexObsReader& operator=(const RinexObsReader&) = delete;
@@ -26,8 +29,11 @@ class RinexObsReader {
   bool next(ObsEpoch& epoch);
   int skippedSpecialRecords() const;
   std::vector<std::string> warnings() const;
+  /// The alignment check's findings per signal (empty with one phase signal per band).
+  const std::vector<SignalOffset>& phaseOffsets() const;
 
  private:
+  RinexObsReader(const std::string& path, bool align);
   bool nextEpoch(ObsEpoch& epoch);
   struct State;
   std::unique_ptr<State> s_;

@@ -45,6 +45,8 @@ RtkSummary runRtk(const RtkJob& job, std::vector<RtkSolution>* out_solutions) {
   RtkFilter filter(orbits, base_e, job.options);
   std::vector<RtkSolution> sols;
   RtkSummary sum;
+  sum.warnings = rover.warnings;
+  sum.warnings.insert(sum.warnings.end(), base.warnings.begin(), base.warnings.end());
   BaseEpochMatcher matcher(base.epochs, job.options.max_base_offset);
   for (const ObsEpoch& e : rover.epochs) {
     checkStop(job.stop);

@@ -24,6 +24,7 @@ struct RtkJob {
 struct RtkSummary {
   int epochs = 0, fixed = 0, floats = 0, single = 0;
   double wall_s = 0.0, data_s = 0.0;
+  std::vector<std::string> warnings;  // the readers' repairs and drops (rover, then base)
 };
 
 RtkSummary runRtk(const RtkJob& job, std::vector<RtkSolution>* solutions = nullptr);
