@@ -18,23 +18,25 @@ std::vector<SignalSpec> readBaseSignals(const std::string& path, const YamlField
   if (!list.IsSequence()) y.fail("gnss.base_signals", "needs a list of {signal: G2X, ...}");
   std::vector<SignalSpec> out;
   for (size_t i = 0; i < list.size(); ++i) {
+    // Each entry read on its own, under its place in the file, so messages name it so.
+    const std::string at = "base_signals[" + std::to_string(i) + "]", k = "gnss." + at;
     YAML::Node wrapper;
-    wrapper["s"] = list[i];
+    wrapper["gnss"][at] = list[i];
     const YamlFields f(path, wrapper);
-    const std::string code = f.text("s.signal");
+    const std::string code = f.text(k + ".signal");
     SignalSpec sig;
     if (code.size() != 3 || systems.find(code[0]) == std::string::npos ||
         carrierFrequency(static_cast<GnssSystem>(code[0]), code[1]) == 0.0 ||
         !std::isupper(static_cast<unsigned char>(code[2]))) {
-      f.fail("s.signal", "'" + code +
-                             "' is not a system of gnss.systems, a band and an attribute"
-                             " (G2X, J1C, ...)");
+      f.fail(k + ".signal", "'" + code +
+                                "' is not a system of gnss.systems, a band and an attribute"
+                                " (G2X, J1C, ...)");
     }
     sig.sys = static_cast<GnssSystem>(code[0]);
     sig.band = code[1];
     sig.attr = code[2];
-    sig.shift_cycles = f.numberOr("s.shift_cycles", 0.0, -0.5, 0.5);
-    sig.min_elevation_deg = f.numberOr("s.min_elevation_deg", 0.0, 0.0, 90.0);
+    sig.shift_cycles = f.numberOr(k + ".shift_cycles", 0.0, -0.5, 0.5);
+    sig.min_elevation_deg = f.numberOr(k + ".min_elevation_deg", 0.0, 0.0, 90.0);
     f.rejectUnknownKeys();
     out.push_back(sig);
   }

@@ -236,6 +236,35 @@ TEST(SimConfig, EveryKeyIsReadOrRefusedByName) {
           << e.what();
     }
   }
+  // A base of another make: its signals are read, and a bad one is named by its place.
+  std::string mixed = paper;
+  mixed.replace(
+      mixed.find("  systems: GEC"), 14,
+      "  systems: GECJ\n  base_phase_aligned: 0\n  base_signals:\n"
+      "    - {signal: G2W, min_elevation_deg: 25}\n    - {signal: J1X, shift_cycles: 0.25}");
+  const sim::SimConfig m = sim::readSimConfig(dir.write("mixed.yaml", mixed));
+  ASSERT_EQ(m.gnss.base_signals.size(), 2u);
+  EXPECT_EQ(m.gnss.base_signals[1].sys, GnssSystem::kQzss);
+  EXPECT_EQ(m.gnss.base_signals[1].attr, 'X');
+  EXPECT_EQ(m.gnss.base_signals[1].shift_cycles, 0.25);
+  EXPECT_EQ(m.gnss.base_signals[0].min_elevation_deg, 25.0);
+  EXPECT_FALSE(m.gnss.base_phase_aligned);
+  for (const auto& [from, to, says] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"signal: J1X", "signal: J9X", "'gnss.base_signals[1].signal': 'J9X'"},
+           {"signal: J1X", "signal: R1C", "'gnss.base_signals[1].signal': 'R1C'"},
+           {"shift_cycles: 0.25", "shift: 0.25", "unknown key 'gnss.base_signals[1].shift'"},
+           {"shift_cycles: 0.25", "shift_cycles: 2", "value 2 outside [-0.5, 0.5]"}}) {
+    std::string bad = mixed;
+    bad.replace(bad.find(from), from.size(), to);
+    try {
+      sim::readSimConfig(dir.write("bad.yaml", bad));
+      ADD_FAILURE() << "accepted " << to;
+    } catch (const DataError& e) {
+      EXPECT_GT(e.line(), 0) << e.what();
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
