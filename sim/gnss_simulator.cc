@@ -119,10 +119,12 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
   SimulatedGnss out;
   out.base_e = base_e;
   out.base_phase_aligned = spec.base_phase_aligned;
+  std::map<GnssSystem, std::vector<SignalSpec>> tracked[2];  // per receiver and system
   for (int r = 0; r < 2; ++r) {
     for (const char sys : spec.systems) {
-      const std::vector<SignalSpec> s = receiverSignals(spec, r, static_cast<GnssSystem>(sys));
-      out.signals[r].insert(out.signals[r].end(), s.begin(), s.end());
+      const auto gs = static_cast<GnssSystem>(sys);
+      tracked[r][gs] = receiverSignals(spec, r, gs);
+      out.signals[r].insert(out.signals[r].end(), tracked[r][gs].begin(), tracked[r][gs].end());
     }
   }
   std::vector<SatId> sats;
@@ -212,7 +214,7 @@ SimulatedGnss simulateGnss(const GnssSimSpec& spec, const BroadcastOrbits& orbit
           }
         }
         if (blocked) continue;
-        for (const SignalSpec& sig : receiverSignals(spec, r, sat.sys)) {
+        for (const SignalSpec& sig : tracked[r][sat.sys]) {
           const char band = sig.band;
           Geometry g;
           if (!geometry(orbits, sat, t_true, p, v, band, g) || g.el < mask ||

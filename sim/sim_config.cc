@@ -35,6 +35,10 @@ std::vector<SignalSpec> readBaseSignals(const std::string& path, const YamlField
     sig.sys = static_cast<GnssSystem>(code[0]);
     sig.band = code[1];
     sig.attr = code[2];
+    for (const SignalSpec& o : out) {
+      if (o.sys == sig.sys && o.band == sig.band && o.attr == sig.attr)
+        f.fail(k + ".signal", "'" + code + "' is listed twice");
+    }
     sig.shift_cycles = f.numberOr(k + ".shift_cycles", 0.0, -0.5, 0.5);
     sig.min_elevation_deg = f.numberOr(k + ".min_elevation_deg", 0.0, 0.0, 90.0);
     f.rejectUnknownKeys();

@@ -254,7 +254,8 @@ TEST(SimConfig, EveryKeyIsReadOrRefusedByName) {
            {"signal: J1X", "signal: J9X", "'gnss.base_signals[1].signal': 'J9X'"},
            {"signal: J1X", "signal: R1C", "'gnss.base_signals[1].signal': 'R1C'"},
            {"shift_cycles: 0.25", "shift: 0.25", "unknown key 'gnss.base_signals[1].shift'"},
-           {"shift_cycles: 0.25", "shift_cycles: 2", "value 2 outside [-0.5, 0.5]"}}) {
+           {"shift_cycles: 0.25", "shift_cycles: 2", "value 2 outside [-0.5, 0.5]"},
+           {"signal: J1X", "signal: G2W", "'G2W' is listed twice"}}) {
     std::string bad = mixed;
     bad.replace(bad.find(from), from.size(), to);
     try {
