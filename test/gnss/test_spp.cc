@@ -89,7 +89,7 @@ TEST(BroadcastOrbitsHealth, QzssLastBitIsMaskedAnyOtherBitExcludes) {
   EXPECT_TRUE(usable(*q, 0));
   EXPECT_TRUE(usable(*q, 1));
   EXPECT_FALSE(usable(*q, 2));
-  EXPECT_FALSE(usable(*q, 32));  // L1C/A
+  EXPECT_FALSE(usable(*q, 32));  // the first of the six bits
   EXPECT_FALSE(usable(*q, 33));
   EXPECT_TRUE(usable(*g, 0));
   EXPECT_FALSE(usable(*g, 1));
