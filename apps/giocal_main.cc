@@ -15,14 +15,13 @@
 #include "apps/interrupt_watch.h"
 #include "apps/observability_command.h"
 #include "apps/report_command.h"
+#include "apps/rtk_command.h"
 #include "apps/validate_command.h"
 #include "common/geodesy/wgs84.h"
-#include "common/gnss/rtk_config.h"
 #include "common/gnss/rtk_job.h"
 #include "common/io/data_error.h"
 #include "common/io/sensor_logs.h"
 #include "common/io/tum_trajectory.h"
-#include "options/giocal_config.h"
 
 namespace po = boost::program_options;
 using giocal::addGnssOptions;
@@ -108,43 +107,6 @@ int runCheckCommand(int argc, char** argv) {
   giocal::DatasetFolder data = giocal::openDatasetFolder(vm["data"].as<std::string>());
   giocal::runCheck(data, std::cout);
   std::cout << "ok\n";
-  return 0;
-}
-
-int runRtkCommand(int argc, char** argv) {
-  po::options_description opts("giocal rtk");
-  opts.add_options()("rover", po::value<std::string>()->required(), "rover RINEX observations")(
-      "base", po::value<std::string>()->required(), "base RINEX observations")(
-      "nav", po::value<std::vector<std::string>>()->required(), "RINEX navigation file(s)")(
-      "base-pos", po::value<std::string>(), "base ECEF x,y,z [m]")(
-      "config", po::value<std::string>(), "YAML configuration")(
-      "out", po::value<std::string>()->required(), "solution file (.pos)")(
-      "overwrite", "replace --out if it exists");
-  const po::variables_map vm = giocal::parseCommand(
-      argc, argv, opts,
-      "giocal rtk: kinematic RTK positions of the rover antenna (LAMBDA ambiguity resolution) as "
-      "an RTKLIB-style .pos",
-      "giocal rtk --rover rover.obs --base base.obs --nav nav.rnx --out rover.pos");
-  giocal::RtkJob job;
-  job.rover = vm["rover"].as<std::string>();
-  job.base = vm["base"].as<std::string>();
-  job.nav = vm["nav"].as<std::vector<std::string>>();
-  job.out = vm["out"].as<std::string>();
-  if (std::filesystem::exists(job.out) && !vm.count("overwrite")) {
-    throw std::runtime_error(job.out + " exists; give --overwrite to replace it");
-  }
-  if (vm.count("base-pos"))
-    job.base_pos = giocal::parseBasePosition(vm["base-pos"].as<std::string>());
-  if (vm.count("config"))
-    job.options = giocal::readGiocalConfig(vm["config"].as<std::string>()).rtk;
-  const giocal::InterruptWatch interrupts;
-  job.stop = interrupts.stop();
-  const giocal::RtkSummary s = giocal::runRtk(job);
-  for (const std::string& w : s.warnings) std::cout << "  warning: " << w << "\n";
-  std::cout << "giocal rtk: " << s.epochs << " epochs, " << s.fixed << " fixed ("
-            << (s.epochs ? 100.0 * s.fixed / s.epochs : 0.0) << " %), " << s.floats << " float, "
-            << s.single << " single; " << s.wall_s << " s for " << s.data_s << " s of data -> "
-            << job.out << "\n";
   return 0;
 }
 
@@ -367,7 +329,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "check") return runCheckCommand(argc - 1, argv + 1);
     if (command == "simulate") return giocal::runSimulateCommand(argc - 1, argv + 1);
-    if (command == "rtk") return runRtkCommand(argc - 1, argv + 1);
+    if (command == "rtk") return giocal::runRtkCommand(argc - 1, argv + 1);
     if (command == "calibrate") return runCalibrateCommand(argc - 1, argv + 1);
     if (command == "compare") return runCompareCommand(argc - 1, argv + 1);
     if (command == "deadreckon") return runDeadReckonCommand(argc - 1, argv + 1);
