@@ -107,12 +107,22 @@ void Calibrator::addOdometer(const OdomSample& raw) {
 
 void Calibrator::addRover(const ObsEpoch& e) {
   BusyTimer busy(busy_s_);
-  push(e.t, {Kind::kRover, {}, {}, e, {}});
+  pushEpoch(Kind::kRover, e);
 }
 
 void Calibrator::addBase(const ObsEpoch& e) {
   BusyTimer busy(busy_s_);
-  push(e.t, {Kind::kBase, {}, {}, e, {}});
+  pushEpoch(Kind::kBase, e);
+}
+
+void Calibrator::pushEpoch(Kind kind, const ObsEpoch& e) {
+  Datum d{kind, {}, {}, e, {}};
+  const bool rover = kind == Kind::kRover;
+  PhaseAlignment& phases = rover ? rover_phases_ : base_phases_;
+  phases.stream(d.obs, rover ? "the rover's epochs" : "the base's epochs");
+  size_t& said = rover ? rover_phases_said_ : base_phases_said_;
+  for (; said < phases.warnings().size(); ++said) run_.warn(phases.warnings()[said]);
+  push(e.t, std::move(d));
 }
 
 void Calibrator::addPosition(const PositionFix& raw) {

@@ -26,6 +26,7 @@
 #include "common/calibration/initial_state.h"
 #include "common/calibration/odometer_delay.h"
 #include "common/gnss/broadcast_orbits.h"
+#include "common/gnss/phase_alignment.h"
 #include "common/gnss/tdcp_track.h"
 #include "common/online/busy_timer.h"
 #include "common/online/convergence.h"
@@ -104,6 +105,8 @@ class Calibrator {
     PositionFix position;
   };
   void push(double t, Datum d);
+  /// A receiver's epoch into the buffer, its phases aligned first (PhaseAlignment::stream).
+  void pushEpoch(Kind kind, const ObsEpoch& e);
   /// Into the reorder buffer (the datum's time is believed).
   void admit(double t, Datum d);
   void release(Datum& d);
@@ -150,6 +153,10 @@ class Calibrator {
   std::unique_ptr<BroadcastOrbits> orbits_;
   std::unique_ptr<TdcpTrack> track_;  // the single-receiver scheme's track for the initial state
   std::deque<ObsEpoch> rover_;        // rover epochs not yet processed
+  // Each receiver's phases of one band checked for alignment as they come (a file's reader has
+  // done it for the whole file; a driver's raw epochs have not).
+  PhaseAlignment rover_phases_, base_phases_;
+  size_t rover_phases_said_ = 0, base_phases_said_ = 0;  // warnings already in the run's
   std::unique_ptr<EstimatorCore> core_;
   ConvergenceMonitor convergence_;
   std::optional<CalibrationEstimate> core_estimate_;  // the present core's previous estimate
