@@ -64,21 +64,35 @@ void OdometerDelayEstimator::addOdometer(double t, double yaw_rate) {
   block_ = {t, t, 0.0};
 }
 
-bool OdometerDelayEstimator::anglesAt(const std::vector<Rate>& g, double t,
-                                      std::vector<double>& out) const {
-  out.resize(sum_x_.size());
-  if (g.size() < 2) return false;
-  // The largest delay first: rising times, so the samples are walked once.
+bool OdometerDelayEstimator::anglesAt(const std::vector<Rate>& samples, double t,
+                                      std::vector<double>& angles) const {
+  angles.resize(sum_x_.size());
+  if (samples.size() < 2 || angles.empty()) return false;
+  // Locals: a store into `angles` could otherwise alias the members, reloaded every candidate.
+  const double max_delay = max_delay_s_, step = step_s_;
+  const Rate* g = samples.data();
+  const std::size_t n = samples.size();
+  double* out = angles.data();
+  const auto time = [&](std::size_t k) { return t - (-max_delay + static_cast<double>(k) * step); };
+  // The largest delay first: rising times (k d is monotonic in k), so the samples are walked
+  // once and the range is checked at its two ends.
+  if (time(angles.size() - 1) < g[0].t || time(0) > g[n - 1].t) return false;
   std::size_t at = 0;
-  for (std::size_t k = out.size(); k-- > 0;) {
-    const double tk = t - (-max_delay_s_ + static_cast<double>(k) * step_s_);
-    if (tk < g.front().t || tk > g.back().t) return false;
+  double slope = 0.0;
+  bool interval_known = false;
+  for (std::size_t k = angles.size(); k-- > 0;) {
+    const double tk = time(k);
     // The last sample at or before tk (the one before the last at the end).
-    while (at + 2 < g.size() && g[at + 1].t <= tk) ++at;
+    const std::size_t before = at;
+    while (at + 2 < n && g[at + 1].t <= tk) ++at;
     const Rate &a = g[at], &b = g[at + 1];
-    if (b.t - a.t > 0.1) return false;  // an IMU gap
-    // The rate is linear between samples: its integral is quadratic.
-    const double h = tk - a.t, slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
+    if (!interval_known || at != before) {
+      if (b.t - a.t > 0.1) return false;  // an IMU gap
+      // The rate is linear between samples: its integral is quadratic.
+      slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
+      interval_known = true;
+    }
+    const double h = tk - a.t;
     out[k] = a.angle + a.rate * h + 0.5 * slope * h * h;
   }
   return true;
