@@ -1,6 +1,7 @@
 // The alignment check of one receiver's phase signals of a band (RINEX 3.01 and later store them
 // aligned): a signal a quarter or half cycle off is aligned with a warning, one off by something
-// else is named and left, one too scattered to judge is left, and the real files in data/.
+// else is named and left, one too scattered to judge is left, and the real files in data/; the
+// same on a stream.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -82,6 +83,49 @@ TEST(PhaseAlignment, AlignedScatteredOrOddOffsetsAreLeftAsTheyAre) {
   EXPECT_TRUE(checked(twoSignals(0.25, 0.01, 4)).offsets().empty());
 }
 
+// The same check on a stream of epochs (the live Calibrator): a signal is judged once its pairs
+// reach kMinPairs and repaired from that epoch on, its first repaired phase marked a loss of lock.
+TEST(PhaseAlignment, AStreamIsRepairedFromItsJudgmentOnAndItsAmbiguitiesRestart) {
+  const std::vector<ObsEpoch> raw = twoSignals(0.25, 0.01, 10);
+  PhaseAlignment stream;
+  // Four pairs an epoch: the fifth epoch brings the 20th, and the judgment.
+  for (size_t k = 0; k < raw.size(); ++k) {
+    SCOPED_TRACE(k);
+    ObsEpoch e = raw[k];
+    stream.stream(e, "the base's epochs");
+    for (size_t i = 0; i < e.sats.size(); ++i) {
+      const SignalObs &w = e.sats[i].signals[0], &x = e.sats[i].signals[1];
+      const SignalObs& x_raw = raw[k].sats[i].signals[1];
+      EXPECT_EQ(w.L, raw[k].sats[i].signals[0].L);  // the reference is never touched
+      EXPECT_EQ(w.lli, 0);
+      if (k < 4) {
+        EXPECT_EQ(x.L, x_raw.L);  // before the judgment: as they came
+        EXPECT_EQ(x.lli, 0);
+      } else {
+        EXPECT_NEAR(x.L, x_raw.L - 0.25, 1e-6);
+        EXPECT_EQ(x.lli, k == 4 ? 1 : 0);  // the first repaired phase: a new ambiguity
+      }
+    }
+  }
+  ASSERT_EQ(stream.warnings().size(), 1u);
+  EXPECT_NE(stream.warnings()[0].find("the base's epochs: G L2X phases sit +0.25 cycles from L2W"),
+            std::string::npos)
+      << stream.warnings()[0];
+  // Aligned phases, or an offset that is not a quarter cycle, go through untouched and unnamed.
+  for (const double offset : {0.0, 0.13}) {
+    PhaseAlignment quiet;
+    for (const ObsEpoch& r : twoSignals(offset, 0.01, 10)) {
+      ObsEpoch e = r;
+      quiet.stream(e, "rover");
+      for (size_t i = 0; i < e.sats.size(); ++i) {
+        EXPECT_EQ(e.sats[i].signals[1].L, r.sats[i].signals[1].L);
+        EXPECT_EQ(e.sats[i].signals[1].lli, 0);
+      }
+    }
+    EXPECT_TRUE(quiet.warnings().empty()) << offset;
+  }
+}
+
 // Every real file in data/ with two phase signals on a band. The Septentrio files (mosaic pair,
 // the 5.3 km rover) are aligned. The 5.3 km pair's Trimble NetR9 base is not: its L2X sits a
 // quarter cycle from its L2W and its QZSS L1X from its L1C, by the very corrections its header
@@ -95,8 +139,8 @@ TEST(PhaseAlignment, TheRealFilesAreAlignedOrRepairedWhereTheyAreNot) {
     const RinexObsReader reader(d + f);
     for (const SignalOffset& o : reader.phaseOffsets()) {
       std::cout << f << ": " << o.sys << " L" << o.band << o.attr << " - L" << o.band << o.ref
-                << " " << o.cycles << " cycles, consistency " << o.consistency << ", "
-                << o.pairs << " pairs, aligned by " << -o.applied << "\n";
+                << " " << o.cycles << " cycles, consistency " << o.consistency << ", " << o.pairs
+                << " pairs, aligned by " << -o.applied << "\n";
       double expected = 0.0;
       if (f == trimble && o.sys == 'G' && o.band == '2' && o.attr == 'X') expected = -0.25;
       if (f == trimble && o.sys == 'J' && o.band == '1' && o.attr == 'X') expected = 0.25;

@@ -1,13 +1,11 @@
 // The live Calibrator checks each receiver's phases of one band as they come (a file's reader
 // checks the whole file; a driver's raw epochs are not checked by anyone else): a base of another
 // make whose L2X phases sit a quarter cycle from its L2W is aligned and named, and calibrates as
-// the same base read from its file; the streaming check on its own repairs from its judgment on
-// and restarts the repaired phases' ambiguities.
+// the same base read from its file (the stream's own rules: test_phase_alignment.cc).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "common/calibration/calibration_inputs.h"
 #include "common/gnss/phase_alignment.h"
@@ -18,69 +16,6 @@
 
 namespace giocal {
 namespace {
-
-// Four GPS satellites tracking L2W and L2X, L2X `offset` cycles from L2W: every signal on its
-// own integer.
-std::vector<ObsEpoch> twoSignals(double offset, int epochs) {
-  std::mt19937_64 rng(3);
-  std::normal_distribution<double> noise(0.0, 0.01);
-  std::vector<ObsEpoch> out;
-  for (int k = 0; k < epochs; ++k) {
-    ObsEpoch e;
-    e.t = k;
-    for (int prn = 1; prn <= 4; ++prn) {
-      SatObs s;
-      s.sat = {GnssSystem::kGps, prn};
-      const double phase = 1e6 * prn + 100.3 * k;
-      s.signals.push_back({'2', 'W', 2e7, phase + 17 * prn});
-      s.signals.push_back({'2', 'X', 2e7, phase - 5 * prn + offset + noise(rng)});
-      e.sats.push_back(s);
-    }
-    out.push_back(e);
-  }
-  return out;
-}
-
-TEST(LivePhaseAlignment, AStreamIsRepairedFromItsJudgmentOnAndItsAmbiguitiesRestart) {
-  const std::vector<ObsEpoch> raw = twoSignals(0.25, 10);
-  PhaseAlignment stream;
-  // Four pairs an epoch: the fifth epoch brings the 20th, and the judgment.
-  for (size_t k = 0; k < raw.size(); ++k) {
-    SCOPED_TRACE(k);
-    ObsEpoch e = raw[k];
-    stream.stream(e, "the base's epochs");
-    for (size_t i = 0; i < e.sats.size(); ++i) {
-      const SignalObs &w = e.sats[i].signals[0], &x = e.sats[i].signals[1];
-      const SignalObs& x_raw = raw[k].sats[i].signals[1];
-      EXPECT_EQ(w.L, raw[k].sats[i].signals[0].L);  // the reference is never touched
-      EXPECT_EQ(w.lli, 0);
-      if (k < 4) {
-        EXPECT_EQ(x.L, x_raw.L);  // before the judgment: as they came
-        EXPECT_EQ(x.lli, 0);
-      } else {
-        EXPECT_NEAR(x.L, x_raw.L - 0.25, 1e-6);
-        EXPECT_EQ(x.lli, k == 4 ? 1 : 0);  // the first repaired phase: a new ambiguity
-      }
-    }
-  }
-  ASSERT_EQ(stream.warnings().size(), 1u);
-  EXPECT_NE(stream.warnings()[0].find("the base's epochs: G L2X phases sit +0.25 cycles from L2W"),
-            std::string::npos)
-      << stream.warnings()[0];
-  // Aligned phases, or an offset that is not a quarter cycle, go through untouched and unnamed.
-  for (const double offset : {0.0, 0.13}) {
-    PhaseAlignment quiet;
-    for (const ObsEpoch& r : twoSignals(offset, 10)) {
-      ObsEpoch e = r;
-      quiet.stream(e, "rover");
-      for (size_t i = 0; i < e.sats.size(); ++i) {
-        EXPECT_EQ(e.sats[i].signals[1].L, r.sats[i].signals[1].L);
-        EXPECT_EQ(e.sats[i].signals[1].lli, 0);
-      }
-    }
-    EXPECT_TRUE(quiet.warnings().empty()) << offset;
-  }
-}
 
 // Fed in time order, as a robot's drivers would.
 CalibrationRun feed(const CalibrationInputs& in) {
