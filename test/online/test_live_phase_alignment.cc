@@ -11,6 +11,7 @@
 #include "common/gnss/phase_alignment.h"
 #include "common/gnss/rinex_obs.h"
 #include "replay/estimator_factory.h"
+#include "sim/base_of_another_make.h"
 #include "sim/simulator.h"
 #include "temp_dir.h"
 
@@ -35,16 +36,7 @@ CalibrationRun feed(const CalibrationInputs& in) {
 }
 
 TEST(LivePhaseAlignment, RawPhasesOfABaseOfAnotherMakeCalibrateAsItsAlignedFile) {
-  sim::SimConfig cfg =
-      sim::readSimConfig(std::string(GIOCAL_SOURCE_DIR) + "/config/sim/paper.yaml");
-  cfg.gnss.systems = "GECJ";
-  // GPS L2 as L2W above 25 degrees and L2X everywhere, QZSS L1 as L1C and L1X: below 25 degrees
-  // a satellite's L2 double difference at the base is L2X, above it L2W.
-  cfg.gnss.base_signals = {
-      {GnssSystem::kGps, '1', 'C'},        {GnssSystem::kGps, '2', 'W', 0.0, 25.0},
-      {GnssSystem::kGps, '2', 'X', -0.25}, {GnssSystem::kQzss, '1', 'C'},
-      {GnssSystem::kQzss, '1', 'X', 0.25}, {GnssSystem::kQzss, '2', 'X'}};
-  cfg.gnss.base_phase_aligned = false;
+  const sim::SimConfig cfg = test::paperWithBaseOfAnotherMake(false);
   test::TempDir dir;
   const std::string data = dir.file("d");
   sim::writeDataset(sim::simulate(cfg, 4), data);

@@ -12,6 +12,7 @@
 #include "common/gnss/rtk_job.h"
 #include "common/math/rotation.h"
 #include "common/time/gps_time.h"
+#include "sim/base_of_another_make.h"
 #include "sim/simulator.h"
 #include "temp_dir.h"
 
@@ -206,25 +207,11 @@ TEST(GnssSimulation, GiocalRtkFixesUnderTreesAreWithin5cm) {
   EXPECT_LE(c.fixed - c.within, c.fixed / 100);
 }
 
-// A base of another make (the 5.3 km pair's Trimble against its Septentrio rover): the base
-// tracks GPS L2 as semi-codeless L2W above 25 degrees and as L2C (L2X) everywhere, QZSS L1 as
-// L1C/A and L1C (L1X). Its file lists those signals and records the phase-shift corrections.
-sim::SimConfig paperWithBaseOfAnotherMake(bool aligned) {
-  sim::SimConfig cfg = paper();
-  cfg.gnss.systems = "GECJ";
-  cfg.gnss.base_signals = {
-      {GnssSystem::kGps, '1', 'C'},        {GnssSystem::kGps, '2', 'W', 0.0, 25.0},
-      {GnssSystem::kGps, '2', 'X', -0.25}, {GnssSystem::kQzss, '1', 'C'},
-      {GnssSystem::kQzss, '1', 'X', 0.25}, {GnssSystem::kQzss, '2', 'X'}};
-  cfg.gnss.base_phase_aligned = aligned;
-  return cfg;
-}
-
 TEST(GnssSimulation, ABaseOfAnotherMakeWritesItsSignalsAndPhaseShifts) {
   for (const bool aligned : {true, false}) {
     SCOPED_TRACE(aligned ? "aligned" : "raw phases");
     test::TempDir dir;
-    const sim::SimulatedLogs logs = sim::simulate(paperWithBaseOfAnotherMake(aligned), 4);
+    const sim::SimulatedLogs logs = sim::simulate(test::paperWithBaseOfAnotherMake(aligned), 4);
     sim::writeDataset(logs, dir.file("d"));
     const ObsData base = readRinexObs(dir.file("d/base.obs"));
     const ObsData rover = readRinexObs(dir.file("d/rover.obs"));
@@ -286,8 +273,8 @@ TEST(GnssSimulation, GiocalRtkFixesAgainstABaseOfAnotherMake) {
   sim::SimConfig same = paper();
   same.gnss.systems = "GECJ";
   FixCount c[3];
-  const sim::SimConfig cfgs[3] = {same, paperWithBaseOfAnotherMake(true),
-                                  paperWithBaseOfAnotherMake(false)};
+  const sim::SimConfig cfgs[3] = {same, test::paperWithBaseOfAnotherMake(true),
+                                  test::paperWithBaseOfAnotherMake(false)};
   for (int k = 0; k < 3; ++k) {
     const sim::SimulatedLogs logs = sim::simulate(cfgs[k], 4);
     const std::string d = dir.file("d" + std::to_string(k));
