@@ -8,6 +8,7 @@
 # The GNSS is the same real file for every seed; the seeds change the motion sensors' errors and
 # the initial guess. Prints one row per seed and run, then the mean |error| per state and run.
 # Usage: [PAIR=mosaic|gsi] bench/moved_rover.sh [first seed, default 9101] [seeds, default 6]
+#        CONFIG=<yaml> adds a calibrate --config to the rover-alone runs.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-9101}"
@@ -55,9 +56,11 @@ for seed in $(seq "$first" $((first + count - 1))); do
       "$giocal" rtk --rover "$d/rover.obs" --base "$d/base.obs" --nav "$d/nav.rnx" \
         --base-pos "$base_pos" --out "$d/rtk.pos" | sed "s/^/  seed $seed: /"
     fi
+    config=()
+    [ "$scheme" = alone ] && [ -n "${CONFIG:-}" ] && config=(--config "$CONFIG")
     for e in ekf fgo; do
-      "$giocal" calibrate --data "$d" --estimator "$e" --no-validate --quiet --out "$d/$e" \
-        > /dev/null || true
+      "$giocal" calibrate --data "$d" --estimator "$e" --no-validate --quiet "${config[@]}" \
+        --out "$d/$e" > /dev/null || true
       python3 - "$d/$e/summary.json" "$seed" "$scheme-$e" >> "$rows" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1])); e = s["error"]

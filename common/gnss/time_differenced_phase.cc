@@ -166,7 +166,10 @@ std::vector<SatId> TdcpBuilder::takeNewlyBroken() {
 }
 
 TdcpBuilder::TdcpBuilder(const BroadcastOrbits& orbits, const TdcpOptions& options)
-    : orbits_(orbits), options_(options), slips_(options.slips) {}
+    : orbits_(orbits),
+      options_(options),
+      slips_(options.slips),
+      ionosphere_(options.ionosphere_window_s, options.ionosphere_min_span_s) {}
 
 TdcpPair TdcpBuilder::add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e) {
   slips_.update(epoch);
@@ -248,6 +251,7 @@ TdcpPair TdcpBuilder::add(const ObsEpoch& epoch, const Eigen::Vector3d& rover_e)
     std::nth_element(code_minus_phase.begin(), mid, code_minus_phase.end());
     if (std::abs(*mid) > kClockJump_m) ++out.left_out.clock_jumps;
   }
+  ionosphere_.correct(out);
   out.left_out.alone += formRows(out);
   // Satellites that slipped in this pair, and in every one before it up to the limit.
   for (const SatObs& now : paired ? epoch.sats : none) {

@@ -13,6 +13,7 @@
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/cycle_slip.h"
 #include "common/gnss/dd_epoch.h"
+#include "common/gnss/ionosphere_rate.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/weighting.h"
 
@@ -30,6 +31,11 @@ struct TdcpOptions {
   // track it, a multipath trap): left out from then on, and named once.
   int max_slips_in_a_row = 10;
   CycleSlipOptions slips;
+  // The ionosphere's change taken out of each pair of satellites seen on two bands: its rate
+  // fitted to the geometry-free phase over this span (0: not taken out), once the satellite's
+  // two-band phase has run unbroken for the shorter one (IonosphereRate).
+  double ionosphere_window_s = 120.0;
+  double ionosphere_min_span_s = 60.0;
 };
 
 /// One satellite's phase on one band at the pair's two epochs.
@@ -121,6 +127,7 @@ class TdcpBuilder {
   const BroadcastOrbits& orbits_;
   TdcpOptions options_;
   CycleSlipDetector slips_;
+  IonosphereRate ionosphere_;
   ObsEpoch previous_;
   Eigen::Vector3d previous_e_ = Eigen::Vector3d::Zero();
   bool has_previous_ = false;
