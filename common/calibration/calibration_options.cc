@@ -65,6 +65,7 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
   o.lc.learn_heights = flag("lc.learn_heights", o.lc.learn_heights);
   const std::string single = s + "single.";
   TdcpOptions& td = o.single.tdcp;
+  td.systems = o.dd.systems;  // rtk.systems, as the Doppler rows take them
   td.max_interval_s = y.numberOr(single + "max_interval_s", td.max_interval_s, 0.01, 60.0);
   td.phase.sigma_zenith = y.numberOr(single + "phase_sigma", td.phase.sigma_zenith, 1e-5, 1.0);
   td.elevation_mask_deg =

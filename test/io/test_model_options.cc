@@ -82,11 +82,18 @@ TEST(CalibrationOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_DOUBLE_EQ(c.init.max_turn_deg, d.init.max_turn_deg);
   EXPECT_DOUBLE_EQ(c.init.velocity_sigma, d.init.velocity_sigma);
   EXPECT_DOUBLE_EQ(c.init.attitude_sigma_deg, d.init.attitude_sigma_deg);
-  // The rtk section's DD options reach the calibrators.
+  EXPECT_DOUBLE_EQ(c.single.tdcp.ionosphere_window_s, d.single.tdcp.ionosphere_window_s);
+  EXPECT_EQ(c.single.tdcp.systems, d.single.tdcp.systems);
+  // The rtk section's DD options reach the calibrators; its systems the single-receiver
+  // scheme's time differences too.
   test::TempDir dir;
   const CalibrationOptions g = readCalibrationOptions(
-      dir.write("g.yaml", "rtk:\n  systems: G\ncalibration:\n  ambiguity_resolution: 0\n"));
+      dir.write("g.yaml",
+                "rtk:\n  systems: G\ncalibration:\n  ambiguity_resolution: 0\n  single:\n"
+                "    ionosphere_window_s: 0\n"));
   EXPECT_EQ(g.dd.systems, std::vector<GnssSystem>{GnssSystem::kGps});
+  EXPECT_EQ(g.single.tdcp.systems, std::vector<GnssSystem>{GnssSystem::kGps});
+  EXPECT_EQ(g.single.tdcp.ionosphere_window_s, 0.0);
   EXPECT_FALSE(g.ambiguity_resolution);
   EXPECT_THROW(readCalibrationOptions(dir.write("b.yaml", "calibration:\n  innovation_gate: 0\n")),
                DataError);
