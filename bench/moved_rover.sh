@@ -8,7 +8,8 @@
 # The GNSS is the same real file for every seed; the seeds change the motion sensors' errors and
 # the initial guess. Prints one row per seed and run, then the mean |error| per state and run.
 # Usage: [PAIR=mosaic|gsi] bench/moved_rover.sh [first seed, default 9101] [seeds, default 6]
-#        CONFIG=<yaml> adds a calibrate --config to the rover-alone runs.
+#        CONFIG=<yaml> adds a calibrate --config to every run (e.g. a narrower sky: rtk.systems,
+#        rtk.elevation_mask_deg and calibration.single.elevation_mask_deg).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 first="${1:-9101}"
@@ -57,7 +58,7 @@ for seed in $(seq "$first" $((first + count - 1))); do
         --base-pos "$base_pos" --out "$d/rtk.pos" | sed "s/^/  seed $seed: /"
     fi
     config=()
-    [ "$scheme" = alone ] && [ -n "${CONFIG:-}" ] && config=(--config "$CONFIG")
+    [ -n "${CONFIG:-}" ] && config=(--config "$CONFIG")
     for e in ekf fgo; do
       "$giocal" calibrate --data "$d" --estimator "$e" --no-validate --quiet "${config[@]}" \
         --out "$d/$e" > /dev/null || true
