@@ -8,6 +8,7 @@
 #          (a preset is a name in config/sim/ or a path to a .yaml, e.g. the one
 #          `PRESET_OUT=<file> bench/real_like_gnss.sh` writes)
 #          (default seeds 6001-6010; about 15 s per seed and preset)
+#        CONFIG=<yaml> adds a calibrate --config to every run.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 giocal="${GIOCAL_BIN:-$root/build/apps/giocal}"
@@ -16,6 +17,8 @@ seeds=("${@:-6001 6002 6003 6004 6005 6006 6007 6008 6009 6010}")
 read -r -a seeds <<< "${seeds[*]}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
+config=()
+[ -n "${CONFIG:-}" ] && config=(--config "$CONFIG")
 for source in ${PRESETS:-paper field}; do
   preset="$(basename "$source" .yaml)"
   [ -f "$source" ] || source="$root/config/sim/$preset.yaml"
@@ -25,10 +28,10 @@ for source in ${PRESETS:-paper field}; do
     "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --out "$d-base" > /dev/null
     "$giocal" simulate --config "$work/$preset.yaml" --seed "$seed" --no-base --out "$d-alone" \
       > /dev/null
-    "$giocal" calibrate --data "$d-base" --estimator "$est" --quiet --out "$d-rtk" \
+    "$giocal" calibrate --data "$d-base" --estimator "$est" --quiet "${config[@]}" --out "$d-rtk" \
       > /dev/null 2>&1 || true
-    "$giocal" calibrate --data "$d-alone" --estimator "$est" --quiet --out "$d-single" \
-      > /dev/null 2>&1 || true
+    "$giocal" calibrate --data "$d-alone" --estimator "$est" --quiet "${config[@]}" \
+      --out "$d-single" > /dev/null 2>&1 || true
   done
 done
 python3 - "$work" "$est" "${seeds[@]}" <<'PY'
