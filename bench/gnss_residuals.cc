@@ -11,6 +11,7 @@
 // time-differenced phase row (TdcpBuilder, the single-receiver scheme's) against the true antenna
 // displacement, for checking the TDCP model against the simulator's phases. With --spp-csv F as
 // well, each epoch's single point position against the true antenna (ENU error and stated sigma).
+// --ionosphere-window S sets TdcpOptions::ionosphere_window_s (0: the ionosphere's change left in).
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -45,7 +46,7 @@ NavData readNavs(const std::vector<std::string>& paths) {
 // residual (observed minus the true displacement's prediction) and the row's stated sigma.
 int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& nav_paths,
                 const std::string& truth_path, const Eigen::Vector3d& p_b_g,
-                const std::string& spp_path) {
+                const std::string& spp_path, const TdcpOptions& tdcp) {
   const BroadcastOrbits orbits(readNavs(nav_paths));
   const ObsData rover = readRinexObs(rover_path);
   const std::vector<TruthSample> truth = readTruthCsv(truth_path);
@@ -57,7 +58,7 @@ int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& n
     p_e = antennaOfRow(truth[k], p_b_g);
     return true;
   };
-  TdcpBuilder builder(orbits);
+  TdcpBuilder builder(orbits, tdcp);
   std::map<double, Eigen::Vector3d> at;  // antenna by epoch time
   std::printf("t,sat,ref,band,el_sat_deg,el_ref_deg,residual_m,sigma_m\n");
   FILE* spp_out = spp_path.empty() ? nullptr : std::fopen(spp_path.c_str(), "w");
@@ -104,6 +105,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> nav_paths;
   Eigen::Vector3d base_e = Eigen::Vector3d::Zero();
   DdOptions options;
+  TdcpOptions tdcp;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string k = argv[i], v = argv[i + 1];
     if (k == "--rover")
@@ -125,14 +127,17 @@ int main(int argc, char** argv) {
         std::cerr << "giocal_gnss_residuals: --p-b-g takes x,y,z [m]\n";
         return 2;
       }
-    } else if (k == "--frequencies")
+    } else if (k == "--ionosphere-window")
+      tdcp.ionosphere_window_s = std::stod(v);
+    else if (k == "--frequencies")
       options.frequencies = std::stoi(v);
     else {
       std::cerr << "giocal_gnss_residuals: unknown option " << k << "\n";
       return 2;
     }
   }
-  if (!truth_path.empty()) return tdcpAtTruth(rover_path, nav_paths, truth_path, p_b_g, spp_path);
+  if (!truth_path.empty())
+    return tdcpAtTruth(rover_path, nav_paths, truth_path, p_b_g, spp_path, tdcp);
   if (!rover_path.empty() && !nav_paths.empty() && base_path.empty()) {
     const BroadcastOrbits orbits(readNavs(nav_paths));
     const ObsData rover = readRinexObs(rover_path);
