@@ -1,6 +1,10 @@
 #include "common/gnss/ionosphere_rate.h"
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
 #include <set>
+#include <vector>
 
 #include "common/gnss/time_differenced_phase.h"
 
@@ -8,22 +12,30 @@ namespace giocal {
 
 namespace {
 
-// The two signals of one satellite on different bands in a pair (indices), the first band first.
-struct BandPair {
+// One satellite's signals in a pair (indices): the first band's and, where it has one, the first
+// of another band (the geometry-free pair); a third band is corrected with them.
+struct SatelliteSignals {
   int a = -1, b = -1;
+  std::vector<int> all;
 };
 
-std::map<SatId, BandPair> bandPairs(const TdcpPair& pair) {
-  std::map<SatId, BandPair> out;
+std::map<SatId, SatelliteSignals> bySatellite(const TdcpPair& pair) {
+  std::map<SatId, SatelliteSignals> out;
   for (int i = 0; i < static_cast<int>(pair.signals.size()); ++i) {
-    BandPair& p = out[pair.signals[i].sat];
-    if (p.a < 0) {
-      p.a = i;
-    } else if (p.b < 0 && pair.signals[i].band != pair.signals[p.a].band) {
-      p.b = i;
+    SatelliteSignals& s = out[pair.signals[i].sat];
+    s.all.push_back(i);
+    if (s.a < 0) {
+      s.a = i;
+    } else if (s.b < 0 && pair.signals[i].band != pair.signals[s.a].band) {
+      s.b = i;
     }
   }
   return out;
+}
+
+// The delay on a signal per metre of delay on the first band: (f_a / f)^2 = (lambda / lambda_a)^2.
+double delayRatio(const TdcpSignal& g, const TdcpSignal& a) {
+  return (g.lambda / a.lambda) * (g.lambda / a.lambda);
 }
 
 }  // namespace
@@ -31,14 +43,16 @@ std::map<SatId, BandPair> bandPairs(const TdcpPair& pair) {
 int IonosphereRate::correct(TdcpPair& pair) {
   if (window_s_ <= 0.0) return 0;
   const double dt = pair.t1 - pair.t0;
+  // A window shorter than the span asked for would never give a rate.
+  const double needed = std::min(min_span_, window_s_);
   std::set<SatId> fed;
   int corrected = 0;
-  for (const auto& [sat, p] : bandPairs(pair)) {
-    if (p.b < 0) continue;
-    TdcpSignal& a = pair.signals[p.a];
-    TdcpSignal& b = pair.signals[p.b];
-    // I_b = gamma I_a, and the geometry-free phase is (gamma - 1) I_a plus the ambiguities.
-    const double gamma = (b.lambda / a.lambda) * (b.lambda / a.lambda);
+  for (const auto& [sat, s] : bySatellite(pair)) {
+    if (s.b < 0) continue;
+    const TdcpSignal a = pair.signals[s.a];
+    const TdcpSignal b = pair.signals[s.b];
+    // The geometry-free phase is (gamma - 1) I_a plus the ambiguities, I_b = gamma I_a.
+    const double gamma = delayRatio(b, a);
     const double change_a = (a.phase_change_m - b.phase_change_m) / (gamma - 1.0);
     Track& track = tracks_[sat];
     if (track.delay.empty() || std::abs(track.delay.back().first - pair.t0) > 1e-6) {
@@ -47,7 +61,7 @@ int IonosphereRate::correct(TdcpPair& pair) {
     track.delay.emplace_back(pair.t1, track.delay.back().second + change_a);
     while (pair.t1 - track.delay.front().first > window_s_ + 1e-6) track.delay.pop_front();
     fed.insert(sat);
-    if (pair.t1 - track.delay.front().first < min_span_ - 1e-6) continue;
+    if (pair.t1 - track.delay.front().first < needed - 1e-6) continue;
     // The straight line through the accumulated delay: each point carries one epoch's
     // geometry-free phase noise (half a time difference's variance per band).
     double t_mean = 0.0, y_mean = 0.0;
@@ -67,11 +81,13 @@ int IonosphereRate::correct(TdcpPair& pair) {
     const double point_variance = 0.5 * (a.variance + b.variance) / ((gamma - 1.0) * (gamma - 1.0));
     const double change_variance = point_variance / sxx * dt * dt;
     // The phase is advanced by the delay: its change plus the delay's change is the range's.
-    a.phase_change_m += rate * dt;
-    b.phase_change_m += gamma * rate * dt;
-    a.variance += change_variance;
-    b.variance += gamma * gamma * change_variance;
-    corrected += 2;
+    for (int i : s.all) {
+      TdcpSignal& g = pair.signals[static_cast<size_t>(i)];
+      const double k = delayRatio(g, a);
+      g.phase_change_m += k * rate * dt;
+      g.variance += k * k * change_variance;
+      ++corrected;
+    }
   }
   for (auto it = tracks_.begin(); it != tracks_.end();) {
     it = fed.count(it->first) ? std::next(it) : tracks_.erase(it);

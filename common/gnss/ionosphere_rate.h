@@ -18,10 +18,11 @@ struct TdcpPair;
 class IonosphereRate {
  public:
   /// window_s: the span the rate is fitted over (0: no correction); min_span_s: the shortest
-  /// span of a satellite's unbroken two-band phase that gives it a rate.
+  /// span of a satellite's unbroken two-band phase that gives it a rate (at most window_s).
   IonosphereRate(double window_s, double min_span_s) : window_s_(window_s), min_span_(min_span_s) {}
-  /// Feeds the pair's phase changes of the satellites seen on two bands and corrects both bands'
-  /// by the ionosphere's change over the pair (the fitted rate; its variance added to theirs).
+  /// Feeds the pair's phase changes of the satellites seen on two bands and corrects each of
+  /// their bands by the ionosphere's change over the pair (the fitted rate, scaled by the
+  /// band's (f_1/f)^2; its variance added to theirs).
   /// Returns the number of signals corrected.
   int correct(TdcpPair& pair);
 

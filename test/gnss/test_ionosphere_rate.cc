@@ -65,6 +65,34 @@ TEST(IonosphereRate, TheDelaysChangeIsTakenOutOfBothBandsOnceItsSpanIsLongEnough
   }
 }
 
+TEST(IonosphereRate, AThirdBandIsCorrectedAndAWindowShorterThanTheSpanStillGivesARate) {
+  // GPS L1, L2 and L5: the delay on each band is (f_1/f)^2 times L1's.
+  const SatId g1{GnssSystem::kGps, 1}, g2{GnssSystem::kGps, 2};
+  IonosphereRate short_window(20.0, 60.0);
+  for (int k = 0; k < 30; ++k) {
+    TdcpPair pair;
+    pair.t0 = 100.0 + k;
+    pair.t1 = pair.t0 + 1.0;
+    for (const SatId& sat : {g1, g2}) {
+      const double lambda1 = kC / carrierFrequency(sat.sys, '1');
+      for (char band : ddBands(sat.sys, 3)) {
+        TdcpSignal g;
+        g.sat = sat;
+        g.band = band;
+        g.lambda = kC / carrierFrequency(sat.sys, band);
+        const double ratio = (g.lambda / lambda1) * (g.lambda / lambda1);
+        g.phase_change_m = 0.1 * sat.prn - 4e-4 * ratio;
+        g.variance = 2.0 * 0.003 * 0.003;
+        pair.signals.push_back(g);
+      }
+    }
+    ASSERT_EQ(pair.signals.size(), 6u);
+    EXPECT_EQ(short_window.correct(pair), k >= 19 ? 6 : 0) << "pair " << k;
+    if (k < 19) continue;
+    for (const TdcpSignal& g : pair.signals) EXPECT_NEAR(g.phase_change_m, 0.1 * g.sat.prn, 1e-9);
+  }
+}
+
 TEST(IonosphereRate, AStepAcrossAGapOrAWindowOfZeroCorrectsNothing) {
   const std::vector<SatId> sats{{GnssSystem::kGps, 1}, {GnssSystem::kGps, 2}};
   IonosphereRate off(0.0, 10.0);
