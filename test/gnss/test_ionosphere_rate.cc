@@ -9,23 +9,22 @@
 namespace giocal {
 namespace {
 
-constexpr double kC = 299792458.0;
-
-// Satellites whose L1 delay grows at rate_m_s each, seen on two bands, between t and t + 1 s:
-// each phase change is the range change minus the delay's change on its band.
+// Satellites whose first-band delay grows by rates[i] metres a second, seen on two bands,
+// between t and t + 1 s: each phase change is the range change minus the delay's change on its
+// band.
 TdcpPair pairAt(double t, const std::vector<SatId>& sats, const std::vector<double>& rates,
                 bool second_band_of_first = true) {
   TdcpPair pair;
   pair.t0 = t;
   pair.t1 = t + 1.0;
   for (size_t i = 0; i < sats.size(); ++i) {
-    const double lambda1 = kC / carrierFrequency(sats[i].sys, primaryBand(sats[i].sys));
+    const double lambda1 = kSpeedOfLight / carrierFrequency(sats[i].sys, primaryBand(sats[i].sys));
     for (char band : ddBands(sats[i].sys, 2)) {
       if (i == 0 && band != primaryBand(sats[i].sys) && !second_band_of_first) continue;
       TdcpSignal g;
       g.sat = sats[i];
       g.band = band;
-      g.lambda = kC / carrierFrequency(sats[i].sys, band);
+      g.lambda = kSpeedOfLight / carrierFrequency(sats[i].sys, band);
       const double range_change = 0.1 * sats[i].prn;
       g.phase_change_m = range_change - rates[i] * (g.lambda / lambda1) * (g.lambda / lambda1);
       g.variance = 2.0 * 0.003 * 0.003;
@@ -74,12 +73,12 @@ TEST(IonosphereRate, AThirdBandIsCorrectedAndAWindowShorterThanTheSpanStillGives
     pair.t0 = 100.0 + k;
     pair.t1 = pair.t0 + 1.0;
     for (const SatId& sat : {g1, g2}) {
-      const double lambda1 = kC / carrierFrequency(sat.sys, '1');
+      const double lambda1 = kSpeedOfLight / carrierFrequency(sat.sys, '1');
       for (char band : ddBands(sat.sys, 3)) {
         TdcpSignal g;
         g.sat = sat;
         g.band = band;
-        g.lambda = kC / carrierFrequency(sat.sys, band);
+        g.lambda = kSpeedOfLight / carrierFrequency(sat.sys, band);
         const double ratio = (g.lambda / lambda1) * (g.lambda / lambda1);
         g.phase_change_m = 0.1 * sat.prn - 4e-4 * ratio;
         g.variance = 2.0 * 0.003 * 0.003;
