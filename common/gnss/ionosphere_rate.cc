@@ -55,25 +55,25 @@ int IonosphereRate::correct(TdcpPair& pair) {
     const double gamma = delayRatio(b, a);
     const double change_a = (a.phase_change_m - b.phase_change_m) / (gamma - 1.0);
     Track& track = tracks_[sat];
-    if (track.delay.empty() || std::abs(track.delay.back().first - pair.t0) > 1e-6) {
-      track.delay.assign(1, {pair.t0, 0.0});
+    if (track.empty() || std::abs(track.back().first - pair.t0) > 1e-6) {
+      track.assign(1, {pair.t0, 0.0});
     }
-    track.delay.emplace_back(pair.t1, track.delay.back().second + change_a);
-    while (pair.t1 - track.delay.front().first > window_s_ + 1e-6) track.delay.pop_front();
+    track.emplace_back(pair.t1, track.back().second + change_a);
+    while (pair.t1 - track.front().first > window_s_ + 1e-6) track.pop_front();
     fed.insert(sat);
-    if (pair.t1 - track.delay.front().first < needed - 1e-6) continue;
+    if (pair.t1 - track.front().first < needed - 1e-6) continue;
     // The straight line through the accumulated delay: each point carries one epoch's
     // geometry-free phase noise (half a time difference's variance per band).
     double t_mean = 0.0, y_mean = 0.0;
-    for (const auto& [t, y] : track.delay) {
+    for (const auto& [t, y] : track) {
       t_mean += t;
       y_mean += y;
     }
-    const double n = static_cast<double>(track.delay.size());
+    const double n = static_cast<double>(track.size());
     t_mean /= n;
     y_mean /= n;
     double sxx = 0.0, sxy = 0.0;
-    for (const auto& [t, y] : track.delay) {
+    for (const auto& [t, y] : track) {
       sxx += (t - t_mean) * (t - t_mean);
       sxy += (t - t_mean) * (y - y_mean);
     }

@@ -1,5 +1,5 @@
 // IonosphereRate: each satellite's ionospheric delay rate, from its geometry-free carrier phase
-// over the last tens of seconds, taken out of the time-differenced phase of both its bands. The
+// over the last tens of seconds, taken out of the time-differenced phase of each of its bands. The
 // ionosphere's change over a second is a fraction of a millimetre, but it is slow and differs per
 // satellite (through each one's mapping function), so a single receiver's time differences would
 // otherwise carry it as a steady displacement, mostly vertical (docs/design.md).
@@ -27,11 +27,9 @@ class IonosphereRate {
   int correct(TdcpPair& pair);
 
  private:
-  // The ionosphere on the first band [m] accumulated from the geometry-free phase changes since
-  // the track started, per epoch; a pair without both bands ends the track.
-  struct Track {
-    std::deque<std::pair<double, double>> delay;  // (t, accumulated delay)
-  };
+  // Per satellite, (t, the ionosphere on the first band [m] accumulated from the geometry-free
+  // phase changes since the track started); a pair without both bands ends the track.
+  using Track = std::deque<std::pair<double, double>>;
   double window_s_;
   double min_span_;
   std::map<SatId, Track> tracks_;
