@@ -12,6 +12,7 @@
 // displacement, for checking the TDCP model against the simulator's phases. With --spp-csv F as
 // well, each epoch's single point position against the true antenna (ENU error and stated sigma).
 // --ionosphere-window S sets TdcpOptions::ionosphere_window_s (0: the ionosphere's change left in).
+// --systems GE and --mask DEG set the time differences' sky, and the single point positions'.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -29,6 +30,7 @@
 #include "common/gnss/rinex_obs.h"
 #include "common/gnss/rtk_job.h"
 #include "common/gnss/spp.h"
+#include "common/gnss/tdcp_track.h"
 #include "common/gnss/time_differenced_phase.h"
 #include "common/io/sensor_logs.h"
 
@@ -68,7 +70,7 @@ int tdcpAtTruth(const std::string& rover_path, const std::vector<std::string>& n
     if (!antenna(r.t, p_e)) continue;
     at[r.t] = p_e;
     if (spp_out) {
-      const SppSolution spp = solveSpp(r, orbits, SppOptions{});
+      const SppSolution spp = solveSpp(r, orbits, sppOnSkyOf(tdcp));
       if (spp.valid) {
         const Geodetic g = geodeticFromEcef(p_e);
         const Eigen::Matrix3d R = rotationEcefFromEnu(g.lat, g.lon);
@@ -127,7 +129,12 @@ int main(int argc, char** argv) {
         std::cerr << "giocal_gnss_residuals: --p-b-g takes x,y,z [m]\n";
         return 2;
       }
-    } else if (k == "--ionosphere-window")
+    } else if (k == "--systems") {
+      tdcp.systems.clear();
+      for (const char c : v) tdcp.systems.push_back(static_cast<GnssSystem>(c));
+    } else if (k == "--mask")
+      tdcp.elevation_mask_deg = std::stod(v);
+    else if (k == "--ionosphere-window")
       tdcp.ionosphere_window_s = std::stod(v);
     else if (k == "--frequencies")
       options.frequencies = std::stoi(v);

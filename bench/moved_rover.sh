@@ -18,14 +18,8 @@ giocal="${GIOCAL:-$root/build/apps/giocal}"
 [ -x "$giocal" ] || { echo "build first: bash scripts/setup.sh"; exit 1; }
 work="$(mktemp -d /tmp/giocal_moved_rover.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
-ecef() {  # "lat lon h" of a survey file as ECEF x,y,z (WGS 84)
-  python3 -c "
-import math,sys
-lat,lon,h=(float(x) for x in open(sys.argv[1]).read().split()[:3])
-a=6378137.0; f=1/298.257223563; e2=f*(2-f); la,lo=math.radians(lat),math.radians(lon)
-n=a/math.sqrt(1-e2*math.sin(la)**2)
-print('%.4f,%.4f,%.4f'%((n+h)*math.cos(la)*math.cos(lo),(n+h)*math.cos(la)*math.sin(lo),(n*(1-e2)+h)*math.sin(la)))" "$1"
-}
+# shellcheck source=bench/survey_ecef.sh
+source "$root/bench/survey_ecef.sh"
 if [ "${PAIR:-mosaic}" = gsi ]; then
   m="$root/data/real/gsi-static-0759-3040"
   rover="$m/07590920.05o" base="$m/30400920.05o" navs="$m/30400920.05n $m/07590920.05n"
@@ -36,7 +30,8 @@ if [ "${PAIR:-mosaic}" = gsi ]; then
 else
   m="$root/data/real/mosaic-static-nagoya"
   rover="$m/rover.obs" base="$m/base.obs" navs="$m/base.nav"
-  rover_pos="$(ecef "$m/rover_position.txt")" base_pos="$(ecef "$m/base_position.txt")"
+  rover_pos="$(survey_ecef "$m/rover_position.txt")"
+  base_pos="$(survey_ecef "$m/base_position.txt")"
   laps=2 schemes="base alone"
 fi
 sed -e "s/^  laps: 10/  laps: $laps/" -e "s|\.\./\.\./data/|$root/data/|" "$root/config/sim/field.yaml" \

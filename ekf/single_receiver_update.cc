@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "common/gnss/tdcp_track.h"
 #include "common/math/rotation.h"
 #include "common/models/position_model.h"
 #include "common/models/tdcp_model.h"
@@ -51,7 +52,7 @@ GnssEpochReport SingleReceiverUpdate::process(CalibrationFilter& f, const ObsEpo
   const DopplerRows doppler = updateDoppler(f, orbits_, options_, rover, ant_e, {}, dt);
   rep.rejected_rows += doppler.rejected;
   rep.doppler_rows = doppler.used;
-  const SppSolution spp = solveSpp(rover, orbits_, SppOptions{});
+  const SppSolution spp = solveSpp(rover, orbits_, sppOnSkyOf(options_.single.tdcp));
   const bool positioned = spp.valid && updatePosition(f, spp);
   rep.used = rep.tdcp_rows > 0 || positioned;
   // The pose here is the next pair's first.
@@ -70,9 +71,12 @@ int SingleReceiverUpdate::updateTdcp(CalibrationFilter& f, TdcpPair pair, GnssEp
       screenTdcp(pair, antennaAt(f, kGnssP, kGnssQ), antennaAt(f, state::kP, state::kQ),
                  displacementSigma(s), options_.single.tdcp_screen_gate);
   rep.tdcp_screened = screened;
-  const std::vector<StateKey> keys{kGnssP, kGnssQ, state::kP, state::kQ, state::kPbg};
+  std::vector<StateKey> keys{kGnssP, kGnssQ, state::kP, state::kQ, state::kPbg};
+  const bool drift = options_.single.tdcp_drift_sigma > 0 &&
+                     advanceDrift(f, pair, antennaAt(f, state::kP, state::kQ));
+  if (drift) keys.push_back(state::kTdcpDrift);
   while (pair.rows.size() >= 3) {
-    const TdcpModel model(f.frame(), pair);
+    const TdcpModel model(f.frame(), pair, drift);
     const Eigen::VectorXd z =
         normalizedInnovations(s.covariance(), linearize(model, s.bind(keys), s.dim()));
     long worst = 0;
@@ -84,6 +88,32 @@ int SingleReceiverUpdate::updateTdcp(CalibrationFilter& f, TdcpPair pair, GnssEp
     ++rep.rejected_rows;
   }
   return 0;
+}
+
+bool SingleReceiverUpdate::advanceDrift(CalibrationFilter& f, const TdcpPair& pair,
+                                        const Eigen::Vector3d& ant_e) {
+  StateRegistry& s = f.state();
+  const Eigen::Matrix3d Q =
+      tdcpDriftCovariance(f.frame(), pair, ant_e, options_.single.tdcp_drift_sigma);
+  const bool known = s.has(state::kTdcpDrift);
+  if (!Q.allFinite()) return known;  // kept as it is until a sky fixes it again
+  if (!known) {
+    s.add(vectorBlock(state::kTdcpDrift), Eigen::Vector3d::Zero(), Q);
+    drift_t_ = pair.t1;
+    return true;
+  }
+  // x <- phi x + w: the block's rows and columns scaled by phi, the stationary covariance of
+  // this sky filling what the decay left (phi^2 P + (1 - phi^2) Q).
+  const double phi =
+      std::exp(-std::max(pair.t1 - drift_t_, 0.0) / options_.single.tdcp_drift_tau_s);
+  drift_t_ = pair.t1;
+  const int i = s.offset(state::kTdcpDrift);
+  s.value(state::kTdcpDrift) *= phi;
+  Eigen::MatrixXd& P = s.covariance();
+  P.middleRows(i, 3) *= phi;
+  P.middleCols(i, 3) *= phi;
+  P.block<3, 3>(i, i) += (1.0 - phi * phi) * Q;
+  return true;
 }
 
 bool SingleReceiverUpdate::updatePosition(CalibrationFilter& f, const SppSolution& spp) {

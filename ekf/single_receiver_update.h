@@ -1,7 +1,9 @@
 // SingleReceiverUpdate: one rover epoch without a base in the EKF: the time-differenced carrier
 // phase against a clone of the pose at the previous epoch (screened against the displacement the
 // filter predicts, then gated row by row), Doppler with the receiver clock drift, and the single
-// point position with a loose weight; then the clone moves to this epoch.
+// point position with a loose weight; then the clone moves to this epoch. The rows' slow error
+// is a first-order Gauss-Markov antenna velocity (state::kTdcpDrift) when
+// SingleReceiverOptions::tdcp_drift_sigma is set.
 #pragma once
 
 #include "common/gnss/broadcast_orbits.h"
@@ -25,12 +27,16 @@ class SingleReceiverUpdate {
   /// The TDCP rows that pass, as one update; returns the rows used.
   int updateTdcp(CalibrationFilter& f, TdcpPair pair, GnssEpochReport& rep);
   bool updatePosition(CalibrationFilter& f, const SppSolution& spp);
+  /// Adds the drift state or carries it to the pair's second epoch (its stationary covariance
+  /// from the pair's sky); false where the sky fixes no drift (the rows then go without it).
+  bool advanceDrift(CalibrationFilter& f, const TdcpPair& pair, const Eigen::Vector3d& ant_e);
 
   const BroadcastOrbits& orbits_;
   CalibrationOptions options_;
   TdcpBuilder builder_;
   double t_last_ = NAN;
   double clone_t_ = NAN;  // when the clone kGnssP/kGnssQ was taken
+  double drift_t_ = NAN;  // the time state::kTdcpDrift stands at
 };
 
 }  // namespace giocal

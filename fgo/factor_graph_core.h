@@ -35,13 +35,19 @@ struct FgoEpoch {
   bool still = false;
   bool diverged = false;  // its code rows as a whole far outside their noise (as the EKF's test)
   StateKey p, q, v, ba, bg, sv, sw, cd;  // the quantities at epoch k
+  StateKey vt;                           // and the time differences' drift, where it has one
+  bool drift = false;
   DdEpoch dd;
   std::vector<DdObservation> code_rows, phase_rows;
   std::vector<DopplerObservation> doppler;
   TdcpPair tdcp;  // the single-receiver scheme: the phase changes since the previous epoch
   Eigen::Vector3d gyro = Eigen::Vector3d::Zero();
 
-  std::vector<StateKey> all() const { return {p, q, v, ba, bg, sv, sw, cd}; }
+  std::vector<StateKey> all() const {
+    std::vector<StateKey> keys{p, q, v, ba, bg, sv, sw, cd};
+    if (drift) keys.push_back(vt);
+    return keys;
+  }
 };
 
 class FactorGraphCore : public EstimatorCore {
@@ -88,6 +94,9 @@ class FactorGraphCore : public EstimatorCore {
   void addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev);
   /// After a solve: the TDCP row beyond fgo.rejection_sigma goes with its signal; true if one did.
   bool rejectWorstTdcp(FgoEpoch& e, const FgoEpoch& prev);
+  /// The time differences' drift at e (state::kTdcpDrift, single receiver): a Gauss-Markov
+  /// process from prev's, its stationary covariance from e's sky (the last sky that fixed it).
+  void addDrift(FgoEpoch& e, const FgoEpoch& prev, const Eigen::Vector3d& ant_e);
   /// The LC scheme's position factor of epoch e removed when its solved residual fails the
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
@@ -124,7 +133,8 @@ class FactorGraphCore : public EstimatorCore {
   LocalFrame frame_;
   const BroadcastOrbits& orbits_;
   DdEpochBuilder builder_;
-  TdcpBuilder tdcp_;  // the single-receiver scheme
+  TdcpBuilder tdcp_;                                                   // the single-receiver scheme
+  Eigen::Matrix3d drift_covariance_ = Eigen::Matrix3d::Constant(NAN);  // the last sky's
   CodeOutlierCheck rover_check_, base_check_;
   MotionDetector motion_;
   std::vector<int> held_;  // calibration states the run keeps at the prior (heldStates)

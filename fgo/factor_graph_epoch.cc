@@ -17,6 +17,7 @@ FgoEpoch FactorGraphCore::newEpoch(double t) {
   e.sv = atEpoch(state::kSv, e.k);
   e.sw = atEpoch(state::kSw, e.k);
   e.cd = atEpoch(state::kClockDrift, e.k);
+  e.vt = atEpoch(state::kTdcpDrift, e.k);
   return e;
 }
 

@@ -5,8 +5,11 @@
 #include <cmath>
 
 #include "common/gnss/spp.h"
+#include "common/gnss/tdcp_track.h"
 #include "common/imu/gyro_mean.h"
 #include "common/models/position_model.h"
+#include "common/models/prior_model.h"
+#include "common/models/random_walk_model.h"
 #include "common/models/tdcp_model.h"
 #include "fgo/factor_graph_core.h"
 #include "fgo/factor_tag.h"
@@ -44,7 +47,7 @@ void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const Obs
                            o_.single.tdcp_screen_gate));
     if (e.tdcp.rows.size() < 3) e.tdcp.rows.clear();
   }
-  const SppSolution spp = solveSpp(rover, orbits_, SppOptions{});
+  const SppSolution spp = solveSpp(rover, orbits_, sppOnSkyOf(o_.single.tdcp));
   if (spp.valid) {
     const PositionFix fix = sppFix(spp, e.t, o_.single.position_sigma_min_m);
     w_.addFactor(
@@ -59,23 +62,51 @@ void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const Obs
   e.doppler = dopplerObservations(rover, orbits_, ant_e, o_.doppler, {});
   startClockDrift(e);
   addGnssRowFactors(e);
+  if (o_.single.tdcp_drift_sigma > 0) addDrift(e, prev, ant_e);
   addTdcpFactor(e, prev);
+}
+
+void FactorGraphCore::addDrift(FgoEpoch& e, const FgoEpoch& prev, const Eigen::Vector3d& ant_e) {
+  if (!e.tdcp.rows.empty()) {
+    const Eigen::Matrix3d Q =
+        tdcpDriftCovariance(frame_, e.tdcp, ant_e, o_.single.tdcp_drift_sigma);
+    if (Q.allFinite()) drift_covariance_ = Q;
+  }
+  if (!drift_covariance_.allFinite()) return;  // no sky has fixed one yet
+  e.drift = true;
+  if (!prev.drift) {
+    w_.addVariable(vectorBlock(e.vt), Eigen::Vector3d::Zero());
+    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.vt)},
+                                               Eigen::VectorXd::Zero(3), drift_covariance_),
+                  {e.vt},
+                  0.0,
+                  tagged("drift_prior", e.k)});
+    return;
+  }
+  const double phi = std::exp(-(e.t - prev.t) / o_.single.tdcp_drift_tau_s);
+  w_.addVariable(vectorBlock(e.vt), phi * w_.value(prev.vt));
+  w_.addFactor({std::make_shared<RandomWalkModel>(state::kTdcpDrift, phi,
+                                                  (1.0 - phi * phi) * drift_covariance_),
+                {prev.vt, e.vt},
+                0.0,
+                tagged("drift", e.k)});
 }
 
 void FactorGraphCore::addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev) {
   w_.removeFactors(tagged("tdcp", e.k));
   if (e.tdcp.rows.empty()) return;
-  w_.addFactor({std::make_shared<TdcpModel>(frame_, e.tdcp),
-                {prev.p, prev.q, e.p, e.q, kPbg},
-                0.0,
-                tagged("tdcp", e.k)});
+  std::vector<StateKey> vars{prev.p, prev.q, e.p, e.q, kPbg};
+  if (e.drift) vars.push_back(e.vt);
+  w_.addFactor(
+      {std::make_shared<TdcpModel>(frame_, e.tdcp, e.drift), vars, 0.0, tagged("tdcp", e.k)});
 }
 
 bool FactorGraphCore::rejectWorstTdcp(FgoEpoch& e, const FgoEpoch& prev) {
   if (e.tdcp.rows.empty()) return false;
-  const TdcpModel m(frame_, e.tdcp);
-  const double* params[5] = {w_.value(prev.p).data(), w_.value(prev.q).data(), w_.value(e.p).data(),
-                             w_.value(e.q).data(), w_.value(kPbg).data()};
+  const TdcpModel m(frame_, e.tdcp, e.drift);
+  const double* params[6] = {w_.value(prev.p).data(), w_.value(prev.q).data(),
+                             w_.value(e.p).data(),    w_.value(e.q).data(),
+                             w_.value(kPbg).data(),   e.drift ? w_.value(e.vt).data() : nullptr};
   Eigen::VectorXd r;
   m.evaluate(params, r, nullptr);
   const Eigen::VectorXd z = r.cwiseAbs().cwiseQuotient(m.covariance().diagonal().cwiseSqrt());

@@ -80,6 +80,8 @@ struct GnssSimSpec {
   double orbit_error_rate = 0.0;        // its change, 1-sigma per axis [m/s]
   double sat_clock_error_m = 0.0;       // broadcast satellite clock error, 1-sigma [m]
   double sat_clock_random_walk = 0.0;   // its random walk [m/sqrt(s)]
+  double sat_clock_rate_sd = 0.0;       // its short-term rate, first-order Gauss-Markov,
+  double sat_clock_rate_tau_s = 10.0;   // 1-sigma [m/s] with this correlation time [s]
   double vtec_random_walk = 0.0;        // vertical TEC random walk [TECU/sqrt(s)]
   double zenith_wet_random_walk = 0.0;  // zenith wet delay random walk [m/sqrt(s)]
   double clock_step_s = 0.0;            // the receiver steps its clock by this when it is

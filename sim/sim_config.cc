@@ -176,6 +176,9 @@ SimConfig readSimConfig(const std::string& path) {
     g.sat_clock_error_m = y.numberOr("gnss.sat_clock_error_m", g.sat_clock_error_m, 0.0, 100.0);
     g.sat_clock_random_walk =
         y.numberOr("gnss.sat_clock_random_walk", g.sat_clock_random_walk, 0.0, 0.1);
+    g.sat_clock_rate_sd = y.numberOr("gnss.sat_clock_rate_sd", g.sat_clock_rate_sd, 0.0, 0.1);
+    g.sat_clock_rate_tau_s =
+        y.numberOr("gnss.sat_clock_rate_tau_s", g.sat_clock_rate_tau_s, 0.1, 1e5);
     g.vtec_random_walk = y.numberOr("gnss.vtec_random_walk", g.vtec_random_walk, 0.0, 1.0);
     g.zenith_wet_random_walk =
         y.numberOr("gnss.zenith_wet_random_walk", g.zenith_wet_random_walk, 0.0, 0.01);

@@ -78,6 +78,10 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
       y.numberOr(single + "position_sigma_min", o.single.position_sigma_min_m, 0.01, 1e3);
   o.single.tdcp_screen_gate =
       y.numberOr(single + "screen_gate", o.single.tdcp_screen_gate, 1.0, 1e3);
+  o.single.tdcp_drift_sigma =
+      y.numberOr(single + "tdcp_drift_sigma", o.single.tdcp_drift_sigma, 0.0, 1.0);
+  o.single.tdcp_drift_tau_s =
+      y.numberOr(single + "tdcp_drift_tau_s", o.single.tdcp_drift_tau_s, 1.0, 1e5);
   const std::string i = s + "init.";
   o.init.static_speed = y.numberOr(i + "static_speed", o.init.static_speed, 0.0, 1.0);
   o.init.min_static_s = y.numberOr(i + "min_static_s", o.init.min_static_s, 0.1, 1e3);

@@ -58,6 +58,11 @@ struct SingleReceiverOptions {
   double position_sigma_min_m = 3.0;
   double tdcp_screen_gate = 4.0;  // a signal's phase change this many sigma off the predicted
                                   // displacement is left out of its pair (screenTdcp)
+  // The time differences' slow error: each satellite's range rate off by this much, 1-sigma
+  // [m/s], correlated over tdcp_drift_tau_s, estimated as the antenna velocity it makes
+  // (state::kTdcpDrift, TdcpModel); 0: the rows' errors taken as white.
+  double tdcp_drift_sigma = 7e-4;
+  double tdcp_drift_tau_s = 60.0;
 };
 
 struct CalibrationOptions {

@@ -63,6 +63,9 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
   SppSolution sol;
   std::vector<Candidate> cands;
   for (const SatObs& so : epoch.sats) {
+    if (!options.systems.empty() && std::find(options.systems.begin(), options.systems.end(),
+                                              so.sat.sys) == options.systems.end())
+      continue;
     const SignalObs* sig = so.bestOnBand(primaryBand(so.sat.sys));
     if (!sig || !(sig->P > 1e7) || !(sig->P < 6e7)) continue;
     if (options.cn0_mask_dbhz > 0 && !(sig->S >= options.cn0_mask_dbhz)) continue;

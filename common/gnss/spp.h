@@ -15,9 +15,10 @@ namespace giocal {
 
 struct SppOptions {
   double elevation_mask_deg = 10.0;
-  double cn0_mask_dbhz = 0.0;    // 0 disables the C/N0 mask
-  ElevationNoise code{0.6};      // broadcast-orbit SPP: code noise plus unmodelled errors
-  ElevationNoise doppler{0.05};  // [m/s]
+  std::vector<GnssSystem> systems;  // the systems used; empty: every system
+  double cn0_mask_dbhz = 0.0;       // 0 disables the C/N0 mask
+  ElevationNoise code{0.6};         // broadcast-orbit SPP: code noise plus unmodelled errors
+  ElevationNoise doppler{0.05};     // [m/s]
   double max_gdop = 30.0;
   double chi2_probability = 0.999;  // outlier test: reject the worst until the chi2 test passes
   int max_rejections = 4;

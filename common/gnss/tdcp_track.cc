@@ -12,8 +12,15 @@ namespace {
 constexpr double kDopplerVelocitySigma = 0.1;
 }  // namespace
 
+SppOptions sppOnSkyOf(const TdcpOptions& tdcp) {
+  SppOptions spp;
+  spp.systems = tdcp.systems;
+  spp.elevation_mask_deg = tdcp.elevation_mask_deg;
+  return spp;
+}
+
 std::optional<PositionFix> TdcpTrack::add(const ObsEpoch& epoch) {
-  const SppSolution spp = solveSpp(epoch, orbits_, SppOptions{});
+  const SppSolution spp = solveSpp(epoch, orbits_, spp_);
   started_stretch_ = false;
   if (!spp.valid) {
     if (last_) builder_.add(epoch, last_->p_e);  // the slip tests see the epoch

@@ -14,11 +14,16 @@
 
 namespace giocal {
 
+/// Single point positions on the sky of the time differences: their systems and elevation mask,
+/// the rest SPP's defaults (one receiver's scheme uses one sky).
+SppOptions sppOnSkyOf(const TdcpOptions& tdcp);
+
 class TdcpTrack {
  public:
   TdcpTrack(const BroadcastOrbits& orbits, const TdcpOptions& options, double spp_sigma_min)
       : orbits_(orbits),
         builder_(orbits, options),
+        spp_(sppOnSkyOf(options)),
         spp_sigma_min_(spp_sigma_min),
         max_step_s_(options.max_interval_s) {}
   /// The track's point at the epoch, nullopt without a single point position. Its cov_enu is the
@@ -33,6 +38,7 @@ class TdcpTrack {
  private:
   const BroadcastOrbits& orbits_;
   TdcpBuilder builder_;
+  SppOptions spp_;
   double spp_sigma_min_;
   double max_step_s_;
   std::optional<PositionFix> last_;

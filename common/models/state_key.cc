@@ -34,6 +34,8 @@ const char* quantityName(Quantity q) {
       return "cdt_dot";
     case Quantity::kAmbiguity:
       return "N";
+    case Quantity::kTdcpDrift:
+      return "v_tdcp";
   }
   return "?";
 }

@@ -25,6 +25,8 @@ enum class Quantity : std::uint8_t {
   kGyroTilt,       // the gyro triad's tilt against the accelerometer's (x, y) [rad]
   kClockDrift,     // cdt_dot [m/s]
   kAmbiguity,      // N, a single-differenced carrier-phase ambiguity [cycles]
+  kTdcpDrift,      // one receiver's time differences' slow error as an antenna velocity (ENU)
+                   // [m/s]: the satellites' clock and orbit rates, seen through the geometry
 };
 
 /// Which copy of a quantity: the current one, a two-state model's start (i) and end (j), or the
@@ -77,6 +79,7 @@ inline const StateKey kPbg{Quantity::kAntennaLever};
 inline const StateKey kTdOdo{Quantity::kOdometerDelay};
 inline const StateKey kGyroTilt{Quantity::kGyroTilt};
 inline const StateKey kClockDrift{Quantity::kClockDrift};
+inline const StateKey kTdcpDrift{Quantity::kTdcpDrift};
 }  // namespace state
 
 }  // namespace giocal

@@ -117,6 +117,37 @@ TEST(Spp, GsiRinex2WithinFiveMetres) {
   EXPECT_GE(st.within5, st.solved * 90 / 100);
 }
 
+// SppOptions::systems and the mask: the real mosaic rover's epochs solved on GPS above 24 degrees
+// use only those satellites, and solve as the same epochs with the others taken out of the file.
+TEST(Spp, TheSystemsAndMaskAskedForAreTheOnlyOnesUsed) {
+  const BroadcastOrbits orbits(readRinexNav(kData + "mosaic-static-nagoya/base.nav"));
+  const ObsData obs = readRinexObs(kData + "mosaic-static-nagoya/rover.obs");
+  SppOptions gps;
+  gps.systems = {GnssSystem::kGps};
+  gps.elevation_mask_deg = 24.0;
+  int solved = 0;
+  for (size_t k = 0; k < obs.epochs.size(); k += 30) {
+    const ObsEpoch& e = obs.epochs[k];
+    const SppSolution all = solveSpp(e, orbits, SppOptions{});
+    const SppSolution g = solveSpp(e, orbits, gps);
+    ObsEpoch only = e;
+    only.sats.clear();
+    for (const SatObs& s : e.sats) {
+      if (s.sat.sys == GnssSystem::kGps) only.sats.push_back(s);
+    }
+    SppOptions masked;
+    masked.elevation_mask_deg = 24.0;
+    const SppSolution from_file = solveSpp(only, orbits, masked);
+    ASSERT_TRUE(all.valid && g.valid && from_file.valid);
+    ++solved;
+    EXPECT_GT(all.used.size(), 2 * g.used.size());
+    for (const SatId& s : g.used) EXPECT_EQ(s.sys, GnssSystem::kGps);
+    EXPECT_EQ(g.used, from_file.used);
+    EXPECT_LT((g.p_e - from_file.p_e).norm(), 1e-6);
+  }
+  EXPECT_GE(solved, 10);
+}
+
 TEST(Spp, Chi2Quantile) {
   // Tabulated 99.9 % and 95 % points: exact for 1 and 2 degrees of freedom, Wilson-Hilferty (within
   // 1.5 %, enough for an outlier gate) above.

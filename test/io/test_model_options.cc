@@ -2,6 +2,7 @@
 
 #include "common/calibration/calibration_options.h"
 #include "common/gnss/rtk_config.h"
+#include "common/gnss/tdcp_track.h"
 #include "common/io/data_error.h"
 #include "common/io/model_options.h"
 #include "options/fgo_options.h"
@@ -84,16 +85,23 @@ TEST(CalibrationOptions, ShippedConfigEqualsTheDefaults) {
   EXPECT_DOUBLE_EQ(c.init.attitude_sigma_deg, d.init.attitude_sigma_deg);
   EXPECT_DOUBLE_EQ(c.single.tdcp.ionosphere_window_s, d.single.tdcp.ionosphere_window_s);
   EXPECT_EQ(c.single.tdcp.systems, d.single.tdcp.systems);
+  EXPECT_DOUBLE_EQ(c.single.tdcp_drift_sigma, d.single.tdcp_drift_sigma);
+  EXPECT_DOUBLE_EQ(c.single.tdcp_drift_tau_s, d.single.tdcp_drift_tau_s);
   // The rtk section's DD options reach the calibrators; its systems the single-receiver
   // scheme's time differences too.
   test::TempDir dir;
   const CalibrationOptions g = readCalibrationOptions(
       dir.write("g.yaml",
                 "rtk:\n  systems: G\ncalibration:\n  ambiguity_resolution: 0\n  single:\n"
-                "    ionosphere_window_s: 0\n"));
+                "    ionosphere_window_s: 0\n    tdcp_drift_sigma: 0\n"));
   EXPECT_EQ(g.dd.systems, std::vector<GnssSystem>{GnssSystem::kGps});
   EXPECT_EQ(g.single.tdcp.systems, std::vector<GnssSystem>{GnssSystem::kGps});
   EXPECT_EQ(g.single.tdcp.ionosphere_window_s, 0.0);
+  EXPECT_EQ(g.single.tdcp_drift_sigma, 0.0);
+  // The single point positions take the time differences' sky.
+  const SppOptions spp = sppOnSkyOf(g.single.tdcp);
+  EXPECT_EQ(spp.systems, std::vector<GnssSystem>{GnssSystem::kGps});
+  EXPECT_DOUBLE_EQ(spp.elevation_mask_deg, g.single.tdcp.elevation_mask_deg);
   EXPECT_FALSE(g.ambiguity_resolution);
   EXPECT_THROW(readCalibrationOptions(dir.write("b.yaml", "calibration:\n  innovation_gate: 0\n")),
                DataError);

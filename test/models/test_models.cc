@@ -20,6 +20,7 @@
 #include "common/models/planar_motion_projection.h"
 #include "common/models/position_model.h"
 #include "common/models/prior_model.h"
+#include "common/models/random_walk_model.h"
 #include "common/models/standstill_projection.h"
 #include "common/models/tdcp_model.h"
 #include "common/models/zupt_model.h"
@@ -108,6 +109,8 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
   }
   // Time-differenced phase: the same satellites a second later, 3.9 km along their orbits.
   TdcpPair pair;
+  pair.t0 = 100.0;
+  pair.t1 = 101.0;  // the drift's displacement is v_tdcp (t1 - t0)
   for (size_t k = 0; k < geo.size(); ++k) {
     TdcpSignal g;
     g.sat = geo[k].sat;
@@ -126,6 +129,10 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
   return {std::make_shared<DdGnssModel>(frame, geo, dd, var),
           std::make_shared<DopplerModel>(frame.R_e_n(), Vec3(0.1, -0.2, 0.5), dop),
           std::make_shared<TdcpModel>(frame, pair),
+          std::make_shared<TdcpModel>(frame, pair, true),  // with the drift
+          std::make_shared<RandomWalkModel>(state::kSv, 1, 0.01),
+          std::make_shared<RandomWalkModel>(state::kTdcpDrift, 0.9,  // Gauss-Markov
+                                            Eigen::Matrix3d(Eigen::Vector3d(1, 2, 3).asDiagonal())),
           std::make_shared<HeadingChangeModel>(0.001),
           std::make_shared<AmbiguityFixModel>(fixes, 1e-3),
           std::make_shared<ZuptModel>(0.01),
