@@ -32,8 +32,10 @@ void TdcpModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
   const Vec3 p_i = vec3At(params[0]), p_j = vec3At(params[2]), p_b_g = vec3At(params[4]);
   const Mat3 R_i = quatAt(params[1]).toRotationMatrix();
   const Mat3 R_j = quatAt(params[3]).toRotationMatrix();
+  const double dt = pair_.t1 - pair_.t0;
+  const Vec3 drift = with_drift_ ? Vec3(vec3At(params[5]) * dt) : Vec3::Zero();
   const Vec3 ant_i = frame_.ecefFromEnu(p_i + R_i * p_b_g);
-  const Vec3 ant_j = frame_.ecefFromEnu(p_j + R_j * p_b_g);
+  const Vec3 ant_j = frame_.ecefFromEnu(p_j + R_j * p_b_g + drift);
   const long m = residualSize();
   residual.resize(m);
   if (jacobians) {
@@ -42,16 +44,12 @@ void TdcpModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
       jacobians->push_back(Eigen::MatrixXd::Zero(m, b.tangentSize()));
   }
   const Mat3& R_e_n = frame_.R_e_n();
-  const double dt = pair_.t1 - pair_.t0;
-  const Vec3 drift = with_drift_ ? Vec3(vec3At(params[5]) * dt) : Vec3::Zero();
   for (long a = 0; a < m; ++a) {
     const TdcpRow& row = pair_.rows[static_cast<size_t>(a)];
     Eigen::RowVector3d G_i, G_j;
     residual[a] = tdcpPredict(pair_, row, ant_i, ant_j, &G_i, &G_j) - tdcpObserved(pair_, row);
-    const Eigen::RowVector3d Gn_i = G_i * R_e_n, Gn_j = G_j * R_e_n;
-    // To first order: the drift's displacement is millimetres, the gradient's change with it 1e-10.
-    if (with_drift_) residual[a] += Gn_j * drift;
     if (!jacobians) continue;
+    const Eigen::RowVector3d Gn_i = G_i * R_e_n, Gn_j = G_j * R_e_n;
     (*jacobians)[0].row(a) = Gn_i;
     (*jacobians)[1].row(a) = -Gn_i * R_i * skew(p_b_g);
     (*jacobians)[2].row(a) = Gn_j;
