@@ -6,7 +6,8 @@
 # PAIR=gsi instead moves the GSI pair's rover (two Trimble 5700, 3.3 km, GPS every 30 s) along
 # the whole field drive (1244 s), with the base only (30 s is too long for TDCP pairs).
 # The GNSS is the same real file for every seed; the seeds change the motion sensors' errors and
-# the initial guess. Prints one row per seed and run, then the mean |error| per state and run.
+# the initial guess. Prints one row per seed and run, then the mean |error| per state and run,
+# and the mean stated sigma of s_v and the roll (what the run holds, apart from its luck).
 # Usage: [PAIR=mosaic|gsi] bench/moved_rover.sh [first seed, default 9101] [seeds, default 6]
 #        CONFIG=<yaml> adds a calibrate --config to every run (e.g. a narrower sky: rtk.systems,
 #        rtk.elevation_mask_deg and calibration.single.elevation_mask_deg).
@@ -61,7 +62,8 @@ for seed in $(seq "$first" $((first + count - 1))); do
 import json, sys
 s = json.load(open(sys.argv[1])); e = s["error"]
 print(sys.argv[2], sys.argv[3], s["status"].split(":")[0], s["fix_rate"], e["s_v"], e["s_w"],
-      e["p_b_m"][0], e["p_b_m"][1], *e["rpy_b_m_deg"], e["nees7"])
+      e["p_b_m"][0], e["p_b_m"][1], *e["rpy_b_m_deg"], e["nees7"], s["sd"]["s_v"],
+      s["sd"]["rpy_b_m_deg"][0])
 PY
       tail -1 "$rows" | awk '{printf "%-6s %-12s %6.3f %9.5f %9.5f %8.4f %8.4f %8.3f %8.3f %8.3f %6.1f%s\n",
         $1, $2, $4, $5, $6, $7, $8, $9, $10, $11, $12, ($3 == "ok" ? "" : "  " $3)}'
@@ -69,7 +71,8 @@ PY
   done
 done
 echo "mean |error| over seeds $first-$((first + count - 1)):"
-awk '{n[$2]++; for (i = 5; i <= 11; i++) a[$2, i] += ($i < 0 ? -$i : $i); f[$2] += $4; q[$2] += $12}
-  END {for (r in n) printf "%-12s fix %.3f s_v %.5f s_w %.5f x %.4f y %.4f roll %.3f pitch %.3f yaw %.3f nees7 %.1f\n",
+awk '{n[$2]++; for (i = 5; i <= 11; i++) a[$2, i] += ($i < 0 ? -$i : $i); f[$2] += $4; q[$2] += $12
+  sv[$2] += $13; sr[$2] += $14}
+  END {for (r in n) printf "%-12s fix %.3f s_v %.5f s_w %.5f x %.4f y %.4f roll %.3f pitch %.3f yaw %.3f nees7 %.1f sigma s_v %.5f roll %.4f\n",
     r, f[r] / n[r], a[r, 5] / n[r], a[r, 6] / n[r], a[r, 7] / n[r], a[r, 8] / n[r], a[r, 9] / n[r],
-    a[r, 10] / n[r], a[r, 11] / n[r], q[r] / n[r]}' "$rows" | sort
+    a[r, 10] / n[r], a[r, 11] / n[r], q[r] / n[r], sv[r] / n[r], sr[r] / n[r]}' "$rows" | sort

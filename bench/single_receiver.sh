@@ -3,7 +3,8 @@
 # as a rover alone (--no-base: broadcast orbit and clock errors, drifting atmosphere, receiver
 # clock steps, half-cycle slips); the estimator calibrates the first with RTK (TC-AR), the second
 # with --gnss single. Prints per preset and state the mean |error| of each scheme and their
-# ratio, the mean |error|/sigma, the mean NEES7, and the speed.
+# ratio, the mean |error|/sigma, the ratio of the mean stated sigmas (single over RTK: what the
+# schemes hold, apart from their luck), the mean NEES7, and the speed.
 # Usage: [PRESETS="paper field"] [ESTIMATOR=ekf|fgo] bench/single_receiver.sh [seed...]
 #          (a preset is a name in config/sim/ or a path to a .yaml, e.g. the one
 #          `PRESET_OUT=<file> bench/real_like_gnss.sh` writes)
@@ -52,15 +53,16 @@ for source in os.environ.get("PRESETS", "paper field").split():
     print(f"{preset} preset, {est}, seeds {seeds[0]}-{seeds[-1]}: runs ok: RTK {ok['rtk']}, "
           f"single {ok['single']} of {len(seeds)}")
     print(f"  {'state':8} {'RTK |err|':>11} {'single |err|':>13} {'ratio':>6} "
-          f"{'RTK err/sd':>11} {'single err/sd':>14}")
+          f"{'RTK err/sd':>11} {'single err/sd':>14} {'sd ratio':>9}")
     for name, get in states:
         row = {}
         for scheme, summaries in runs.items():
-            pairs = [(abs(get(s["error"])), abs(get(s["error"])) / get(s["sd"]))
+            pairs = [(abs(get(s["error"])), abs(get(s["error"])) / get(s["sd"]), get(s["sd"]))
                      for s in summaries if s and s["status"] == "ok"]
-            row[scheme] = (sum(p[0] for p in pairs) / len(pairs), sum(p[1] for p in pairs) / len(pairs))
+            row[scheme] = [sum(p[k] for p in pairs) / len(pairs) for k in range(3)]
         print(f"  {name:8} {row['rtk'][0]:11.5f} {row['single'][0]:13.5f} "
-              f"{row['single'][0] / row['rtk'][0]:6.2f} {row['rtk'][1]:11.2f} {row['single'][1]:14.2f}")
+              f"{row['single'][0] / row['rtk'][0]:6.2f} {row['rtk'][1]:11.2f} {row['single'][1]:14.2f} "
+              f"{row['single'][2] / row['rtk'][2]:9.2f}")
     for scheme, summaries in runs.items():
         good = [s for s in summaries if s and s["status"] == "ok"]
         nees = sum(s["error"]["nees7"] for s in good) / len(good)
