@@ -12,7 +12,8 @@
 // displacement, for checking the TDCP model against the simulator's phases. With --spp-csv F as
 // well, each epoch's single point position against the true antenna (ENU error and stated sigma).
 // --ionosphere-window S sets TdcpOptions::ionosphere_window_s (0: the ionosphere's change left in).
-// --systems GE and --mask DEG set the time differences' sky, and the single point positions'.
+// --systems GE and --mask DEG set the time differences' sky, and the single point positions';
+// --spp-ionosphere-free 0 makes the latter from the first band with the broadcast ionosphere.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -136,6 +137,8 @@ int main(int argc, char** argv) {
       tdcp.elevation_mask_deg = std::stod(v);
     else if (k == "--ionosphere-window")
       tdcp.ionosphere_window_s = std::stod(v);
+    else if (k == "--spp-ionosphere-free")
+      tdcp.spp_ionosphere_free = std::stoi(v) != 0;
     else if (k == "--frequencies")
       options.frequencies = std::stoi(v);
     else {

@@ -69,6 +69,8 @@ set(GIOCAL_REAL_TESTS
   Spp.GsiRinex2WithinFiveMetres
   Spp.MosaicGpsOnly
   Spp.MosaicMultiConstellationWithinFiveMetresAndStaticDoppler
+  Spp.TheSystemsAndMaskAskedForAreTheOnlyOnesUsed
+  Spp.IonosphereFreeCodeRemovesTheBroadcastIonosphereModelsBias
   UbxLog.ADamagedCopyIsReadUpToTheDamageAndSaysWhere
   UbxRealLog.BeidouD1EphemeridesAgreeWithConvbin
   UbxRealLog.BeidouD2EphemerisAgreesWithConvbin

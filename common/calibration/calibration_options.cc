@@ -74,6 +74,7 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
       static_cast<int>(y.numberOr(single + "max_slips_in_a_row", td.max_slips_in_a_row, 2, 1e6));
   td.ionosphere_window_s =
       y.numberOr(single + "ionosphere_window_s", td.ionosphere_window_s, 0.0, 3600.0);
+  td.spp_ionosphere_free = flag("single.spp_ionosphere_free", td.spp_ionosphere_free);
   o.single.position_sigma_min_m =
       y.numberOr(single + "position_sigma_min", o.single.position_sigma_min_m, 0.01, 1e3);
   o.single.tdcp_screen_gate =

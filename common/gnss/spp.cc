@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "common/gnss/atmosphere.h"
+#include "common/gnss/dd_epoch.h"
 
 namespace giocal {
 
@@ -13,7 +14,13 @@ namespace {
 
 struct Candidate {
   SatId sat;
-  const SignalObs* sig;
+  const SignalObs* sig;  // the primary band's: its range places the satellite, its Doppler
+  // The code range solved for: the primary band's, or with a second band the ionosphere-free
+  // combination (IF), whose noise is `noise_factor` times one band's and whose satellite clock
+  // is referenced to that pair of bands (`clock_shift` [s] added to the primary band's).
+  double P = 0.0;
+  bool iono_free = false;
+  double noise_factor = 1.0, clock_shift = 0.0;
   // The satellite at transmission, which the iterations do not change: found on the first.
   const Ephemeris* eph = nullptr;
   std::optional<SatelliteState> sent;
@@ -21,6 +28,27 @@ struct Candidate {
   double el = 0, az = 0, var = 0, residual = 0;
   Eigen::Vector3d u;  // unit vector receiver -> satellite
 };
+
+/// The ionosphere-free range of the primary band and the first other band with a code range
+/// (as ddBands lists them), if the satellite has one: P_IF = (f1^2 P1 - f2^2 P2) / (f1^2 - f2^2),
+/// its satellite clock shifted from the primary band's group delay to the pair's.
+void ionosphereFree(const SatObs& so, const Ephemeris& eph, Candidate& c) {
+  for (const char band : ddBands(so.sat.sys, 3)) {
+    if (band == c.sig->band) continue;
+    const SignalObs* s2 = so.bestOnBand(band);
+    if (!s2 || !(s2->P > 1e7) || !(s2->P < 6e7)) continue;
+    const double f1 = carrierFrequency(so.sat.sys, c.sig->band);
+    const double f2 = carrierFrequency(so.sat.sys, band);
+    if (!(f1 > 0.0) || !(f2 > 0.0) || f1 == f2) continue;
+    const double g1 = f1 * f1, g2 = f2 * f2;
+    c.P = (g1 * c.sig->P - g2 * s2->P) / (g1 - g2);
+    const double gd1 = groupDelay(eph, c.sig->band), gd2 = groupDelay(eph, band);
+    c.clock_shift = gd1 - (g1 * gd1 - g2 * gd2) / (g1 - g2);
+    c.noise_factor = std::sqrt(g1 * g1 + g2 * g2) / std::abs(g1 - g2);
+    c.iono_free = true;
+    return;
+  }
+}
 
 double normalQuantile(double p) {
   // Acklam's rational approximation of the inverse normal CDF (|error| < 1.2e-9).
@@ -72,8 +100,10 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
     Candidate c;
     c.sat = so.sat;
     c.sig = sig;
+    c.P = sig->P;
     c.eph = orbits.select(so.sat, epoch.t);
     c.u.setZero();
+    if (options.ionosphere_free && c.eph) ionosphereFree(so, *c.eph, c);
     cands.push_back(c);
   }
   std::vector<bool> excluded(cands.size(), false);
@@ -116,10 +146,11 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
                 ionoKlobuchar(orbits.nav().gps_iono, epoch.t, g, c.el, c.az) * (f1 / f) * (f1 / f);
           }
         }
-        c.residual = c.sig->P - (d.norm() + (clk.count(c.sat.sys) ? clk[c.sat.sys] : 0.0) -
-                                 kSpeedOfLight * c.s.clock + trop + iono);
-        c.var = options.code.variance(c.el) + c.s.variance + std::pow(0.5 * iono, 2) +
-                std::pow(0.1 * trop, 2);
+        if (c.iono_free) iono = 0.0;
+        c.residual = c.P - (d.norm() + (clk.count(c.sat.sys) ? clk[c.sat.sys] : 0.0) -
+                            kSpeedOfLight * (c.s.clock + c.clock_shift) + trop + iono);
+        c.var = options.code.variance(c.el) * c.noise_factor * c.noise_factor + c.s.variance +
+                std::pow(0.5 * iono, 2) + std::pow(0.1 * trop, 2);
         rows.push_back(static_cast<int>(k));
         if (std::find(systems.begin(), systems.end(), c.sat.sys) == systems.end()) {
           systems.push_back(c.sat.sys);

@@ -22,6 +22,10 @@ struct SppOptions {
   double max_gdop = 30.0;
   double chi2_probability = 0.999;  // outlier test: reject the worst until the chi2 test passes
   int max_rejections = 4;
+  // A satellite with code on a second band enters as their ionosphere-free combination (three
+  // times one band's noise, no ionosphere model); without one, its primary band with the
+  // broadcast (Klobuchar) model, whose error is metres of slow, common bias.
+  bool ionosphere_free = false;
 };
 
 struct SppSolution {

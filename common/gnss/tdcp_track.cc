@@ -16,6 +16,7 @@ SppOptions sppOnSkyOf(const TdcpOptions& tdcp) {
   SppOptions spp;
   spp.systems = tdcp.systems;
   spp.elevation_mask_deg = tdcp.elevation_mask_deg;
+  spp.ionosphere_free = tdcp.spp_ionosphere_free;
   return spp;
 }
 

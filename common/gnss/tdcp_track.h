@@ -15,7 +15,8 @@
 namespace giocal {
 
 /// Single point positions on the sky of the time differences: their systems and elevation mask,
-/// the rest SPP's defaults (one receiver's scheme uses one sky).
+/// ionosphere-free where two bands allow (spp_ionosphere_free), the rest SPP's defaults (one
+/// receiver's scheme uses one sky).
 SppOptions sppOnSkyOf(const TdcpOptions& tdcp);
 
 class TdcpTrack {

@@ -36,6 +36,9 @@ struct TdcpOptions {
   // two-band phase has run unbroken for the shorter one (IonosphereRate).
   double ionosphere_window_s = 120.0;
   double ionosphere_min_span_s = 60.0;
+  // The scheme's single point positions from the ionosphere-free code where a satellite has two
+  // bands (SppOptions::ionosphere_free; sppOnSkyOf).
+  bool spp_ionosphere_free = true;
 };
 
 /// One satellite's phase on one band at the pair's two epochs.
