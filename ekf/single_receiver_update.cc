@@ -118,11 +118,39 @@ bool SingleReceiverUpdate::advanceDrift(CalibrationFilter& f, const TdcpPair& pa
 
 bool SingleReceiverUpdate::updatePosition(CalibrationFilter& f, const SppSolution& spp) {
   const PositionFix fix = sppFix(spp, f.time(), options_.single.position_sigma_min_m);
+  if (options_.single.spp_bias_sigma > 0) {
+    const Eigen::Matrix3d& R_e_n = f.frame().R_e_n();
+    advanceSppBias(
+        f, R_e_n.transpose() * sppBiasCovariance(spp, options_.single.spp_bias_sigma) * R_e_n);
+    return f
+        .update(positionModelOf(f.frame(), fix, PositionWeighting{}).withBias(),
+                {state::kP, state::kQ, state::kPbg, state::kSppBias},
+                chi2Quantile(options_.chi2_probability, 3))
+        .accepted;
+  }
   const PositionModel model = positionModelOf(f.frame(), fix, PositionWeighting{});
   return f
       .update(model, {state::kP, state::kQ, state::kPbg},
               chi2Quantile(options_.chi2_probability, 3))
       .accepted;
+}
+
+void SingleReceiverUpdate::advanceSppBias(CalibrationFilter& f, const Eigen::Matrix3d& Q) {
+  StateRegistry& s = f.state();
+  if (!s.has(state::kSppBias)) {
+    s.add(vectorBlock(state::kSppBias), Eigen::Vector3d::Zero(), Q);
+    spp_bias_t_ = f.time();
+    return;
+  }
+  const double phi =
+      std::exp(-std::max(f.time() - spp_bias_t_, 0.0) / options_.single.spp_bias_tau_s);
+  spp_bias_t_ = f.time();
+  const int i = s.offset(state::kSppBias);
+  s.value(state::kSppBias) *= phi;
+  Eigen::MatrixXd& P = s.covariance();
+  P.middleRows(i, 3) *= phi;
+  P.middleCols(i, 3) *= phi;
+  P.block<3, 3>(i, i) += (1.0 - phi * phi) * Q;
 }
 
 }  // namespace giocal

@@ -37,6 +37,8 @@ struct FgoEpoch {
   StateKey p, q, v, ba, bg, sv, sw, cd;  // the quantities at epoch k
   StateKey vt;                           // and the time differences' drift, where it has one
   bool drift = false;
+  StateKey bs;  // and the single point positions' bias, where it has one
+  bool spp_bias = false;
   DdEpoch dd;
   std::vector<DdObservation> code_rows, phase_rows;
   std::vector<DopplerObservation> doppler;
@@ -46,6 +48,7 @@ struct FgoEpoch {
   std::vector<StateKey> all() const {
     std::vector<StateKey> keys{p, q, v, ba, bg, sv, sw, cd};
     if (drift) keys.push_back(vt);
+    if (spp_bias) keys.push_back(bs);
     return keys;
   }
 };
@@ -97,6 +100,9 @@ class FactorGraphCore : public EstimatorCore {
   /// The time differences' drift at e (state::kTdcpDrift, single receiver): a Gauss-Markov
   /// process from prev's, its stationary covariance from e's sky (the last sky that fixed it).
   void addDrift(FgoEpoch& e, const FgoEpoch& prev, const Eigen::Vector3d& ant_e);
+  /// The single point positions' bias at e (state::kSppBias): a Gauss-Markov process from prev's,
+  /// its stationary covariance from the last solution's sky (sppBiasCovariance).
+  void addSppBias(FgoEpoch& e, const FgoEpoch& prev);
   /// The LC scheme's position factor of epoch e removed when its solved residual fails the
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);
@@ -135,6 +141,7 @@ class FactorGraphCore : public EstimatorCore {
   DdEpochBuilder builder_;
   TdcpBuilder tdcp_;                                                   // the single-receiver scheme
   Eigen::Matrix3d drift_covariance_ = Eigen::Matrix3d::Constant(NAN);  // the last sky's
+  Eigen::Matrix3d spp_bias_covariance_ = Eigen::Matrix3d::Constant(NAN);  // the last sky's
   CodeOutlierCheck rover_check_, base_check_;
   MotionDetector motion_;
   std::vector<int> held_;  // calibration states the run keeps at the prior (heldStates)

@@ -18,6 +18,7 @@ FgoEpoch FactorGraphCore::newEpoch(double t) {
   e.sw = atEpoch(state::kSw, e.k);
   e.cd = atEpoch(state::kClockDrift, e.k);
   e.vt = atEpoch(state::kTdcpDrift, e.k);
+  e.bs = atEpoch(state::kSppBias, e.k);
   return e;
 }
 

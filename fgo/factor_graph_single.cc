@@ -1,7 +1,7 @@
 // The factor graph's single-receiver factors (no base): time-differenced carrier phase linking
 // the epoch's pose with the previous epoch's (screened against the IMU's prediction, then rows
 // left out after the solve while beyond the rejection sigma), Doppler with the clock drift, and
-// the single point position with a loose weight.
+// the single point position with a loose weight and its slow offset (a variable per epoch).
 #include <cmath>
 
 #include "common/gnss/spp.h"
@@ -48,13 +48,28 @@ void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const Obs
     if (e.tdcp.rows.size() < 3) e.tdcp.rows.clear();
   }
   const SppSolution spp = solveSpp(rover, orbits_, sppOnSkyOf(o_.single.tdcp));
+  if (o_.single.spp_bias_sigma > 0) {
+    if (spp.valid) {
+      const Eigen::Matrix3d& R_e_n = frame_.R_e_n();
+      spp_bias_covariance_ =
+          R_e_n.transpose() * sppBiasCovariance(spp, o_.single.spp_bias_sigma) * R_e_n;
+    }
+    addSppBias(e, prev);
+  }
   if (spp.valid) {
     const PositionFix fix = sppFix(spp, e.t, o_.single.position_sigma_min_m);
-    w_.addFactor(
-        {std::make_shared<PositionModel>(positionModelOf(frame_, fix, PositionWeighting{})),
-         {e.p, e.q, kPbg},
-         fo_.code_huber,
-         tagged("position", e.k)});
+    const PositionModel model = positionModelOf(frame_, fix, PositionWeighting{});
+    if (e.spp_bias) {
+      w_.addFactor({std::make_shared<PositionModel>(model.withBias()),
+                    {e.p, e.q, kPbg, e.bs},
+                    fo_.code_huber,
+                    tagged("position", e.k)});
+    } else {
+      w_.addFactor({std::make_shared<PositionModel>(model),
+                    {e.p, e.q, kPbg},
+                    fo_.code_huber,
+                    tagged("position", e.k)});
+    }
   }
   e.gyro = meanGyro(in_.imu, e.t, 0.5 * o_.models.motion.window_s,
                     in_.description.imu_noise.gyro_noise_density)
@@ -90,6 +105,27 @@ void FactorGraphCore::addDrift(FgoEpoch& e, const FgoEpoch& prev, const Eigen::V
                 {prev.vt, e.vt},
                 0.0,
                 tagged("drift", e.k)});
+}
+
+void FactorGraphCore::addSppBias(FgoEpoch& e, const FgoEpoch& prev) {
+  if (!spp_bias_covariance_.allFinite()) return;  // no solution has given one yet
+  const Eigen::Matrix3d& Q = spp_bias_covariance_;
+  e.spp_bias = true;
+  if (!prev.spp_bias) {
+    w_.addVariable(vectorBlock(e.bs), Eigen::Vector3d::Zero());
+    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.bs)},
+                                               Eigen::VectorXd::Zero(3), Q),
+                  {e.bs},
+                  0.0,
+                  tagged("spp_bias_prior", e.k)});
+    return;
+  }
+  const double phi = std::exp(-(e.t - prev.t) / o_.single.spp_bias_tau_s);
+  w_.addVariable(vectorBlock(e.bs), phi * w_.value(prev.bs));
+  w_.addFactor({std::make_shared<RandomWalkModel>(state::kSppBias, phi, (1.0 - phi * phi) * Q),
+                {prev.bs, e.bs},
+                0.0,
+                tagged("spp_bias", e.k)});
 }
 
 void FactorGraphCore::addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev) {

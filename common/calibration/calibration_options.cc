@@ -81,6 +81,10 @@ CalibrationOptions readCalibrationOptions(const YamlFields& y) {
       y.numberOr(single + "screen_gate", o.single.tdcp_screen_gate, 1.0, 1e3);
   o.single.tdcp_drift_sigma =
       y.numberOr(single + "tdcp_drift_sigma", o.single.tdcp_drift_sigma, 0.0, 1.0);
+  o.single.spp_bias_sigma =
+      y.numberOr(single + "spp_bias_sigma", o.single.spp_bias_sigma, 0.0, 1e3);
+  o.single.spp_bias_tau_s =
+      y.numberOr(single + "spp_bias_tau_s", o.single.spp_bias_tau_s, 1.0, 1e6);
   o.single.tdcp_drift_tau_s =
       y.numberOr(single + "tdcp_drift_tau_s", o.single.tdcp_drift_tau_s, 1.0, 1e5);
   const std::string i = s + "init.";

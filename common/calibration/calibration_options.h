@@ -63,6 +63,13 @@ struct SingleReceiverOptions {
   // (state::kTdcpDrift, TdcpModel); 0: the rows' errors taken as white.
   double tdcp_drift_sigma = 7e-4;
   double tdcp_drift_tau_s = 60.0;
+  // The single point positions' slow error: each satellite's range off by spp_bias_sigma [m]
+  // for about spp_bias_tau_s (broadcast orbits and clocks, the atmosphere models), which the
+  // solution's geometry turns into a position offset (sppBiasCovariance: metres under a few
+  // satellites), estimated as a first-order Gauss-Markov offset (state::kSppBias,
+  // PositionModel::withBias); 0: their errors taken as white.
+  double spp_bias_sigma = 2.0;
+  double spp_bias_tau_s = 600.0;
 };
 
 struct CalibrationOptions {

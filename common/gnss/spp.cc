@@ -179,6 +179,8 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
         sol.cov_p = Q.topLeftCorner<3, 3>();
         Eigen::MatrixXd Hg = H;  // GDOP with unit weights
         sol.gdop = std::sqrt((Hg.transpose() * Hg).inverse().trace());
+        const Eigen::MatrixXd A = Q.topRows<3>() * H.transpose() * w.asDiagonal();
+        sol.range_error_cov_p = A * A.transpose();
       }
     }
     if (!converged) return sol;
@@ -272,6 +274,10 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
     break;
   }
   return sol;
+}
+
+Eigen::Matrix3d sppBiasCovariance(const SppSolution& spp, double sigma) {
+  return sigma * sigma * spp.range_error_cov_p;
 }
 
 PositionFix sppFix(const SppSolution& spp, double t, double sigma_min) {

@@ -34,6 +34,9 @@ struct SppSolution {
   Eigen::Matrix3d cov_p = Eigen::Matrix3d::Zero();
   std::map<GnssSystem, double> clock_m;  // receiver clock per system [m]
   double gdop = 0.0;
+  // The position's covariance (ECEF) per unit [m^2] of independent range errors on the satellites
+  // used, through the weighted solution: (N^-1 H^T W)(N^-1 H^T W)^T's position block.
+  Eigen::Matrix3d range_error_cov_p = Eigen::Matrix3d::Zero();
   std::vector<SatId> used, rejected;
   bool velocity_valid = false;
   Eigen::Vector3d v_e = Eigen::Vector3d::Zero();
@@ -48,6 +51,12 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
 /// standard deviations raised to at least `sigma_min` [m]: a single point position's errors are
 /// metres and slow, which its own covariance, from the code noise alone, does not say.
 PositionFix sppFix(const SppSolution& spp, double t, double sigma_min);
+
+/// The covariance (ECEF) of the position error that a slow range error of `sigma` [m] on every
+/// satellite, independently, makes through the solution: sigma^2 range_error_cov_p. Broadcast
+/// orbits and clocks and the atmosphere models err by decimetres to metres per satellite for
+/// minutes; under few satellites their sum is metres.
+Eigen::Matrix3d sppBiasCovariance(const SppSolution& spp, double sigma);
 
 /// chi-square quantile for `dof` degrees of freedom (Wilson-Hilferty approximation).
 double chi2Quantile(double probability, int dof);

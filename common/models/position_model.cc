@@ -10,7 +10,10 @@ namespace giocal {
 const std::vector<StateBlock>& PositionModel::blocks() const {
   static const std::vector<StateBlock> kBlocks{vectorBlock(state::kP), rotationBlock(state::kQ),
                                                vectorBlock(state::kPbg)};
-  return kBlocks;
+  static const std::vector<StateBlock> kWithBias{vectorBlock(state::kP), rotationBlock(state::kQ),
+                                                 vectorBlock(state::kPbg),
+                                                 vectorBlock(state::kSppBias)};
+  return with_bias_ ? kWithBias : kBlocks;
 }
 
 void PositionModel::evaluate(const double* const* params, Eigen::VectorXd& residual,
@@ -19,8 +22,10 @@ void PositionModel::evaluate(const double* const* params, Eigen::VectorXd& resid
   const Mat3 R_n_b = quatAt(params[1]).toRotationMatrix();
   const Vec3 p_b_g = vec3At(params[2]);
   residual = p_n_b + R_n_b * p_b_g - z_;
+  if (with_bias_) residual += vec3At(params[3]);
   // Right perturbation q Exp(theta): R (I + [theta]x) p_b_g = R p_b_g - R [p_b_g]x theta.
   if (jacobians) *jacobians = {Mat3::Identity(), -R_n_b * skew(p_b_g), R_n_b};
+  if (jacobians && with_bias_) jacobians->push_back(Mat3::Identity());
 }
 
 PositionModel positionModelOf(const LocalFrame& frame, const PositionFix& fix,

@@ -15,7 +15,13 @@ class PositionModel : public MeasurementModel {
   PositionModel(const Eigen::Vector3d& p_n_antenna, const Eigen::Matrix3d& covariance_n)
       : z_(p_n_antenna), cov_(covariance_n) {}
   std::string name() const override { return "position"; }
-  const std::vector<StateBlock>& blocks() const override;  // p_n_b, q_n_b, p_b_g
+  /// With a bias, the solution is the antenna plus state::kSppBias (an offset in n).
+  PositionModel withBias() const {
+    PositionModel m = *this;
+    m.with_bias_ = true;
+    return m;
+  }
+  const std::vector<StateBlock>& blocks() const override;  // p_n_b, q_n_b, p_b_g[, b_spp]
   int residualSize() const override { return 3; }
   void evaluate(const double* const* params, Eigen::VectorXd& residual,
                 std::vector<Eigen::MatrixXd>* jacobians) const override;
@@ -24,6 +30,7 @@ class PositionModel : public MeasurementModel {
  private:
   Eigen::Vector3d z_;
   Eigen::Matrix3d cov_;
+  bool with_bias_ = false;
 };
 
 /// How far a position solution's own covariance is believed (the LC scheme's YAML keys

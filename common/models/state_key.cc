@@ -36,6 +36,8 @@ const char* quantityName(Quantity q) {
       return "N";
     case Quantity::kTdcpDrift:
       return "v_tdcp";
+    case Quantity::kSppBias:
+      return "b_spp";
   }
   return "?";
 }

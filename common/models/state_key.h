@@ -27,6 +27,8 @@ enum class Quantity : std::uint8_t {
   kAmbiguity,      // N, a single-differenced carrier-phase ambiguity [cycles]
   kTdcpDrift,      // one receiver's time differences' slow error as an antenna velocity (ENU)
                    // [m/s]: the satellites' clock and orbit rates, seen through the geometry
+  kSppBias,        // one receiver's single point positions' slow error (ENU) [m]: broadcast
+                   // orbits, clocks and atmosphere models, seen through the geometry
 };
 
 /// Which copy of a quantity: the current one, a two-state model's start (i) and end (j), or the
@@ -80,6 +82,7 @@ inline const StateKey kTdOdo{Quantity::kOdometerDelay};
 inline const StateKey kGyroTilt{Quantity::kGyroTilt};
 inline const StateKey kClockDrift{Quantity::kClockDrift};
 inline const StateKey kTdcpDrift{Quantity::kTdcpDrift};
+inline const StateKey kSppBias{Quantity::kSppBias};
 }  // namespace state
 
 }  // namespace giocal

@@ -191,6 +191,44 @@ TEST(Spp, IonosphereFreeCodeRemovesTheBroadcastIonosphereModelsBias) {
   EXPECT_LT(mean2.norm(), 1.0) << mean2.transpose() << " against " << mean1.transpose();
 }
 
+// SppSolution::range_error_cov_p against the solutions themselves: each used satellite's code
+// moved by 0.3 m in turn (the real mosaic rover, GPS above 24 degrees: a narrow sky), the
+// position's moves per metre summed as outer products equal it.
+TEST(Spp, RangeErrorCovarianceIsTheSumOfEachSatellitesPull) {
+  const BroadcastOrbits orbits(readRinexNav(kData + "mosaic-static-nagoya/base.nav"));
+  const ObsData obs = readRinexObs(kData + "mosaic-static-nagoya/rover.obs");
+  SppOptions gps;
+  gps.systems = {GnssSystem::kGps};
+  gps.elevation_mask_deg = 24.0;
+  for (size_t k = 0; k < obs.epochs.size(); k += 100) {
+    const ObsEpoch& e = obs.epochs[k];
+    const SppSolution s0 = solveSpp(e, orbits, gps);
+    ASSERT_TRUE(s0.valid);
+    ASSERT_GE(s0.used.size(), 5u);
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (const SatId& sat : s0.used) {
+      ObsEpoch moved = e;
+      for (SatObs& so : moved.sats) {
+        if (so.sat != sat) continue;
+        for (SignalObs& sig : so.signals) {
+          if (sig.band == primaryBand(sat.sys)) sig.P += 0.3;
+        }
+      }
+      const SppSolution s1 = solveSpp(moved, orbits, gps);
+      ASSERT_TRUE(s1.valid);
+      ASSERT_EQ(s1.used, s0.used);
+      const Eigen::Vector3d d = (s1.p_e - s0.p_e) / 0.3;
+      C += d * d.transpose();
+    }
+    EXPECT_LT((C - s0.range_error_cov_p).norm(), 2e-3 * s0.range_error_cov_p.norm())
+        << C << "\n"
+        << s0.range_error_cov_p;
+    EXPECT_GT(std::sqrt(s0.range_error_cov_p.trace()), 1.5);  // a narrow sky: PDOP above 1.5
+    const Eigen::Matrix3d Q = sppBiasCovariance(s0, 2.0);
+    EXPECT_LT((Q - 4.0 * C).norm(), 1e-2 * Q.norm());
+  }
+}
+
 TEST(Spp, Chi2Quantile) {
   // Tabulated 99.9 % and 95 % points: exact for 1 and 2 degrees of freedom, Wilson-Hilferty (within
   // 1.5 %, enough for an outlier gate) above.

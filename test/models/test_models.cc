@@ -138,6 +138,9 @@ std::vector<std::shared_ptr<MeasurementModel>> allModels() {
           std::make_shared<ZuptModel>(0.01),
           std::make_shared<PositionModel>(Vec3(3.0, -2.0, 1.0),
                                           Eigen::Vector3d(0.01, 0.02, 0.05).asDiagonal()),
+          std::make_shared<PositionModel>(  // with the single point positions' bias
+              PositionModel(Vec3(3.0, -2.0, 1.0), Eigen::Vector3d(0.01, 0.02, 0.05).asDiagonal())
+                  .withBias()),
           std::make_shared<NhcModel>(Vec3(0.1, -0.2, 0.5), 0.05),
           std::make_shared<ImuPreintegrationModel>(imu),
           std::make_shared<ImuPreintegrationModel>(imu, true),  // with the gyro's tilt
