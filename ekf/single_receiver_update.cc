@@ -30,6 +30,27 @@ double displacementSigma(const StateRegistry& s) {
   return std::sqrt(std::max(C.trace(), 0.0));
 }
 
+// A first-order Gauss-Markov 3-vector `key` carried from `t_at` to t (then t_at = t), with
+// stationary covariance Q: added at zero with Q where the state has none yet; else x <- phi x + w,
+// the block's rows and columns scaled by phi and Q filling what the decay left
+// (phi^2 P + (1 - phi^2) Q).
+void carryGaussMarkov(StateRegistry& s, const StateKey& key, double t, double tau_s,
+                      const Eigen::Matrix3d& Q, double& t_at) {
+  if (!s.has(key)) {
+    s.add(vectorBlock(key), Eigen::Vector3d::Zero(), Q);
+    t_at = t;
+    return;
+  }
+  const double phi = std::exp(-std::max(t - t_at, 0.0) / tau_s);
+  t_at = t;
+  const int i = s.offset(key);
+  s.value(key) *= phi;
+  Eigen::MatrixXd& P = s.covariance();
+  P.middleRows(i, 3) *= phi;
+  P.middleCols(i, 3) *= phi;
+  P.block<3, 3>(i, i) += (1.0 - phi * phi) * Q;
+}
+
 }  // namespace
 
 SingleReceiverUpdate::SingleReceiverUpdate(const BroadcastOrbits& orbits,
@@ -97,22 +118,7 @@ bool SingleReceiverUpdate::advanceDrift(CalibrationFilter& f, const TdcpPair& pa
       tdcpDriftCovariance(f.frame(), pair, ant_e, options_.single.tdcp_drift_sigma);
   const bool known = s.has(state::kTdcpDrift);
   if (!Q.allFinite()) return known;  // kept as it is until a sky fixes it again
-  if (!known) {
-    s.add(vectorBlock(state::kTdcpDrift), Eigen::Vector3d::Zero(), Q);
-    drift_t_ = pair.t1;
-    return true;
-  }
-  // x <- phi x + w: the block's rows and columns scaled by phi, the stationary covariance of
-  // this sky filling what the decay left (phi^2 P + (1 - phi^2) Q).
-  const double phi =
-      std::exp(-std::max(pair.t1 - drift_t_, 0.0) / options_.single.tdcp_drift_tau_s);
-  drift_t_ = pair.t1;
-  const int i = s.offset(state::kTdcpDrift);
-  s.value(state::kTdcpDrift) *= phi;
-  Eigen::MatrixXd& P = s.covariance();
-  P.middleRows(i, 3) *= phi;
-  P.middleCols(i, 3) *= phi;
-  P.block<3, 3>(i, i) += (1.0 - phi * phi) * Q;
+  carryGaussMarkov(s, state::kTdcpDrift, pair.t1, options_.single.tdcp_drift_tau_s, Q, drift_t_);
   return true;
 }
 
@@ -136,21 +142,8 @@ bool SingleReceiverUpdate::updatePosition(CalibrationFilter& f, const SppSolutio
 }
 
 void SingleReceiverUpdate::advanceSppBias(CalibrationFilter& f, const Eigen::Matrix3d& Q) {
-  StateRegistry& s = f.state();
-  if (!s.has(state::kSppBias)) {
-    s.add(vectorBlock(state::kSppBias), Eigen::Vector3d::Zero(), Q);
-    spp_bias_t_ = f.time();
-    return;
-  }
-  const double phi =
-      std::exp(-std::max(f.time() - spp_bias_t_, 0.0) / options_.single.spp_bias_tau_s);
-  spp_bias_t_ = f.time();
-  const int i = s.offset(state::kSppBias);
-  s.value(state::kSppBias) *= phi;
-  Eigen::MatrixXd& P = s.covariance();
-  P.middleRows(i, 3) *= phi;
-  P.middleCols(i, 3) *= phi;
-  P.block<3, 3>(i, i) += (1.0 - phi * phi) * Q;
+  carryGaussMarkov(f.state(), state::kSppBias, f.time(), options_.single.spp_bias_tau_s, Q,
+                   spp_bias_t_);
 }
 
 }  // namespace giocal

@@ -103,6 +103,12 @@ class FactorGraphCore : public EstimatorCore {
   /// The single point positions' bias at e (state::kSppBias): a Gauss-Markov process from prev's,
   /// its stationary covariance from the last solution's sky (sppBiasCovariance).
   void addSppBias(FgoEpoch& e, const FgoEpoch& prev);
+  /// A first-order Gauss-Markov 3-vector at e (`now`) of stationary covariance Q: from `before`
+  /// (the previous epoch's, at t_before) by RandomWalkModel's Gauss-Markov form, or with a prior
+  /// of Q where there is none, tagged `tag` or `prior_tag`.
+  void addGaussMarkov(const FgoEpoch& e, const StateKey* before, const StateKey& now,
+                      double t_before, double tau_s, const Eigen::Matrix3d& Q, const char* tag,
+                      const char* prior_tag);
   /// The LC scheme's position factor of epoch e removed when its solved residual fails the
   /// chi-square gate (calibration.chi2_probability); true when it was.
   bool rejectPosition(const FgoEpoch& e, const PositionFix& fix);

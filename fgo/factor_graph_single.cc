@@ -89,43 +89,35 @@ void FactorGraphCore::addDrift(FgoEpoch& e, const FgoEpoch& prev, const Eigen::V
   }
   if (!drift_covariance_.allFinite()) return;  // no sky has fixed one yet
   e.drift = true;
-  if (!prev.drift) {
-    w_.addVariable(vectorBlock(e.vt), Eigen::Vector3d::Zero());
-    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.vt)},
-                                               Eigen::VectorXd::Zero(3), drift_covariance_),
-                  {e.vt},
-                  0.0,
-                  tagged("drift_prior", e.k)});
-    return;
-  }
-  const double phi = std::exp(-(e.t - prev.t) / o_.single.tdcp_drift_tau_s);
-  w_.addVariable(vectorBlock(e.vt), phi * w_.value(prev.vt));
-  w_.addFactor({std::make_shared<RandomWalkModel>(state::kTdcpDrift, phi,
-                                                  (1.0 - phi * phi) * drift_covariance_),
-                {prev.vt, e.vt},
-                0.0,
-                tagged("drift", e.k)});
+  addGaussMarkov(e, prev.drift ? &prev.vt : nullptr, e.vt, prev.t, o_.single.tdcp_drift_tau_s,
+                 drift_covariance_, "drift", "drift_prior");
 }
 
 void FactorGraphCore::addSppBias(FgoEpoch& e, const FgoEpoch& prev) {
   if (!spp_bias_covariance_.allFinite()) return;  // no solution has given one yet
-  const Eigen::Matrix3d& Q = spp_bias_covariance_;
   e.spp_bias = true;
-  if (!prev.spp_bias) {
-    w_.addVariable(vectorBlock(e.bs), Eigen::Vector3d::Zero());
-    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(e.bs)},
+  addGaussMarkov(e, prev.spp_bias ? &prev.bs : nullptr, e.bs, prev.t, o_.single.spp_bias_tau_s,
+                 spp_bias_covariance_, "spp_bias", "spp_bias_prior");
+}
+
+void FactorGraphCore::addGaussMarkov(const FgoEpoch& e, const StateKey* before, const StateKey& now,
+                                     double t_before, double tau_s, const Eigen::Matrix3d& Q,
+                                     const char* tag, const char* prior_tag) {
+  if (!before) {
+    w_.addVariable(vectorBlock(now), Eigen::Vector3d::Zero());
+    w_.addFactor({std::make_shared<PriorModel>(std::vector<StateBlock>{vectorBlock(now)},
                                                Eigen::VectorXd::Zero(3), Q),
-                  {e.bs},
+                  {now},
                   0.0,
-                  tagged("spp_bias_prior", e.k)});
+                  tagged(prior_tag, e.k)});
     return;
   }
-  const double phi = std::exp(-(e.t - prev.t) / o_.single.spp_bias_tau_s);
-  w_.addVariable(vectorBlock(e.bs), phi * w_.value(prev.bs));
-  w_.addFactor({std::make_shared<RandomWalkModel>(state::kSppBias, phi, (1.0 - phi * phi) * Q),
-                {prev.bs, e.bs},
+  const double phi = std::exp(-(e.t - t_before) / tau_s);
+  w_.addVariable(vectorBlock(now), phi * w_.value(*before));
+  w_.addFactor({std::make_shared<RandomWalkModel>(StateKey{now.what}, phi, (1.0 - phi * phi) * Q),
+                {*before, now},
                 0.0,
-                tagged("spp_bias", e.k)});
+                tagged(tag, e.k)});
 }
 
 void FactorGraphCore::addTdcpFactor(const FgoEpoch& e, const FgoEpoch& prev) {
