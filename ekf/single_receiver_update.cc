@@ -125,9 +125,7 @@ bool SingleReceiverUpdate::advanceDrift(CalibrationFilter& f, const TdcpPair& pa
 bool SingleReceiverUpdate::updatePosition(CalibrationFilter& f, const SppSolution& spp) {
   const PositionFix fix = sppFix(spp, f.time(), options_.single.position_sigma_min_m);
   if (options_.single.spp_bias_sigma > 0) {
-    const Eigen::Matrix3d& R_e_n = f.frame().R_e_n();
-    advanceSppBias(
-        f, R_e_n.transpose() * sppBiasCovariance(spp, options_.single.spp_bias_sigma) * R_e_n);
+    advanceSppBias(f, sppBiasCovariance(f.frame(), spp, options_.single.spp_bias_sigma));
     return f
         .update(positionModelOf(f.frame(), fix, PositionWeighting{}).withBias(),
                 {state::kP, state::kQ, state::kPbg, state::kSppBias},

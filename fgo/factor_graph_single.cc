@@ -50,9 +50,7 @@ void FactorGraphCore::singleFactors(FgoEpoch& e, const FgoEpoch& prev, const Obs
   const SppSolution spp = solveSpp(rover, orbits_, sppOnSkyOf(o_.single.tdcp));
   if (o_.single.spp_bias_sigma > 0) {
     if (spp.valid) {
-      const Eigen::Matrix3d& R_e_n = frame_.R_e_n();
-      spp_bias_covariance_ =
-          R_e_n.transpose() * sppBiasCovariance(spp, o_.single.spp_bias_sigma) * R_e_n;
+      spp_bias_covariance_ = sppBiasCovariance(frame_, spp, o_.single.spp_bias_sigma);
     }
     addSppBias(e, prev);
   }

@@ -276,8 +276,9 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
   return sol;
 }
 
-Eigen::Matrix3d sppBiasCovariance(const SppSolution& spp, double sigma) {
-  return sigma * sigma * spp.range_error_cov_p;
+Eigen::Matrix3d sppBiasCovariance(const LocalFrame& frame, const SppSolution& spp, double sigma) {
+  const Eigen::Matrix3d& R_e_n = frame.R_e_n();
+  return sigma * sigma * R_e_n.transpose() * spp.range_error_cov_p * R_e_n;
 }
 
 PositionFix sppFix(const SppSolution& spp, double t, double sigma_min) {

@@ -6,6 +6,7 @@
 #include <map>
 #include <vector>
 
+#include "common/geodesy/wgs84.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/observation.h"
 #include "common/gnss/pos_reader.h"
@@ -52,11 +53,12 @@ SppSolution solveSpp(const ObsEpoch& epoch, const BroadcastOrbits& orbits,
 /// metres and slow, which its own covariance, from the code noise alone, does not say.
 PositionFix sppFix(const SppSolution& spp, double t, double sigma_min);
 
-/// The covariance (ECEF) of the position error that a slow range error of `sigma` [m] on every
-/// satellite, independently, makes through the solution: sigma^2 range_error_cov_p. Broadcast
+/// The covariance, in the local frame n, of the position error that a slow range error of `sigma`
+/// [m] on every satellite, independently, makes through the solution: sigma^2 range_error_cov_p
+/// turned from ECEF into n. Broadcast
 /// orbits and clocks and the atmosphere models err by decimetres to metres per satellite for
 /// minutes; under few satellites their sum is metres.
-Eigen::Matrix3d sppBiasCovariance(const SppSolution& spp, double sigma);
+Eigen::Matrix3d sppBiasCovariance(const LocalFrame& frame, const SppSolution& spp, double sigma);
 
 /// chi-square quantile for `dof` degrees of freedom (Wilson-Hilferty approximation).
 double chi2Quantile(double probability, int dof);

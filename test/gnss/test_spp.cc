@@ -224,8 +224,10 @@ TEST(Spp, RangeErrorCovarianceIsTheSumOfEachSatellitesPull) {
         << C << "\n"
         << s0.range_error_cov_p;
     EXPECT_GT(std::sqrt(s0.range_error_cov_p.trace()), 1.5);  // a narrow sky: PDOP above 1.5
-    const Eigen::Matrix3d Q = sppBiasCovariance(s0, 2.0);
-    EXPECT_LT((Q - 4.0 * C).norm(), 1e-2 * Q.norm());
+    const LocalFrame frame(s0.p_e);
+    const Eigen::Matrix3d Q = sppBiasCovariance(frame, s0, 2.0);
+    const Eigen::Matrix3d C_n = frame.R_e_n().transpose() * C * frame.R_e_n();
+    EXPECT_LT((Q - 4.0 * C_n).norm(), 1e-2 * Q.norm());
   }
 }
 
