@@ -36,6 +36,7 @@ class EkfCore : public EstimatorCore {
   GnssUpdate gnss_;
   SingleReceiverUpdate single_;  // options.single_receiver: rover epochs without a base
   double next_output_;
+  bool odometer_tallied_ = false;  // the odometer's counters exist in the run
 };
 
 }  // namespace giocal

@@ -24,14 +24,18 @@ void StateRegistry::add(const StateBlock& block, const Eigen::VectorXd& value,
   P_.bottomRows(m).setZero();
   P_.rightCols(m).setZero();
   P_.bottomRightCorner(m, m) = covariance;
-  vars_.insert(lowerBoundKey(vars_, block.key), {block.key, Variable{block, value, n}});
+  const auto at = lowerBoundKey(vars_, block.key);
+  ordinals_.insert(ordinals_.begin() + (at - vars_.begin()), block.key.ordinal());
+  vars_.insert(at, {block.key, Variable{block, value, n}});
   order_.push_back(block.key);
 }
 
 void StateRegistry::remove(const StateKey& key) {
   const int off = offset(key);
   if (off >= 0) dropColumns(off, block(key).tangentSize());
-  vars_.erase(findKey(vars_, key));
+  const auto at = findKey(vars_, key);
+  ordinals_.erase(ordinals_.begin() + (at - vars_.begin()));
+  vars_.erase(at);
   if (off >= 0) order_.erase(std::find(order_.begin(), order_.end(), key));
 }
 
@@ -91,8 +95,10 @@ void StateRegistry::clone(const StateKey& key, const StateKey& copy) {
 }
 
 const StateRegistry::Variable* StateRegistry::find(const StateKey& key) const {
-  const auto it = findKey(vars_, key);
-  return it == vars_.end() ? nullptr : &it->second;
+  const auto ordinal = key.ordinal();
+  const auto it = std::lower_bound(ordinals_.begin(), ordinals_.end(), ordinal);
+  if (it == ordinals_.end() || *it != ordinal) return nullptr;
+  return &vars_[static_cast<size_t>(it - ordinals_.begin())].second;
 }
 
 const StateRegistry::Variable& StateRegistry::get(const StateKey& key) const {

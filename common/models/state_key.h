@@ -2,9 +2,11 @@
 // EKF's registry and the factor graph's window: what it is, which copy, epoch, satellite and band.
 #pragma once
 
+#include <climits>
 #include <cstdint>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "common/gnss/satellite.h"
 
@@ -48,6 +50,16 @@ struct StateKey {
   std::string str() const;
 
   auto tie() const { return std::tie(what, copy, epoch, sat.sys, sat.prn, band, version); }
+  /// The key as two integers that compare as tie() does (each field offset to unsigned, in
+  /// tie()'s order): a look-up's comparisons are then two integer compares each.
+  std::pair<std::uint64_t, std::uint64_t> ordinal() const {
+    const auto u8 = [](char v) { return std::uint64_t(std::uint8_t(int(v) - CHAR_MIN)); };
+    const auto u32 = [](int v) { return std::uint64_t(std::uint32_t(v) ^ 0x80000000u); };
+    const std::uint64_t prn = u32(sat.prn);
+    return {(std::uint64_t(what) << 56) | (std::uint64_t(copy) << 48) | (u32(epoch) << 16) |
+                (u8(static_cast<char>(sat.sys)) << 8) | (prn >> 24),
+            ((prn & 0xffffffu) << 40) | (u8(band) << 32) | u32(version)};
+  }
   bool operator<(const StateKey& o) const { return tie() < o.tie(); }
   bool operator==(const StateKey& o) const { return tie() == o.tie(); }
   bool operator!=(const StateKey& o) const { return !(*this == o); }

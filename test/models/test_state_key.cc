@@ -33,6 +33,37 @@ TEST(StateKey, EveryFieldTellsKeysApart) {
   }
 }
 
+TEST(StateKey, OrdinalsCompareAsTheKeysDo) {
+  // The registry searches the ordinals of keys sorted by operator<: the two orders must agree,
+  // at the fields' extremes too (negative epochs and PRNs, the top bits of each field).
+  std::vector<StateKey> keys;
+  for (const Quantity what : {Quantity::kPosition, Quantity::kAmbiguity, Quantity::kSppBias}) {
+    for (const Copy copy : {Copy::kNow, Copy::kGnss}) {
+      for (const int epoch : {-1, 0, 7, 1 << 20, -(1 << 30)}) {
+        for (const SatId sat :
+             {SatId{GnssSystem::kGps, 5}, SatId{GnssSystem::kBeidou, 63},
+              SatId{GnssSystem::kGps, (1 << 24) + 1}, SatId{GnssSystem::kGps, -3}}) {
+          for (const char band : {'\0', '1', '5'}) {
+            for (const int version : {0, 1, -2, 1 << 30}) {
+              keys.push_back({what, copy, epoch, sat, band, version});
+            }
+          }
+        }
+      }
+    }
+  }
+  int pairs = 0;
+  for (size_t a = 0; a < keys.size(); a += 7) {
+    for (size_t b = 0; b < keys.size(); b += 5) {
+      EXPECT_EQ(keys[a] < keys[b], keys[a].ordinal() < keys[b].ordinal())
+          << keys[a].str() << " " << keys[b].str();
+      EXPECT_EQ(keys[a] == keys[b], keys[a].ordinal() == keys[b].ordinal());
+      ++pairs;
+    }
+  }
+  EXPECT_GT(pairs, 10000);
+}
+
 TEST(StateKey, PrintsAsTheNamesInMessages) {
   EXPECT_EQ(state::kPbm.str(), "p_b_m");
   EXPECT_EQ(at(state::kQ, Copy::kI).str(), "q_n_b@i");
