@@ -23,6 +23,7 @@ OdometerDelayEstimator::OdometerDelayEstimator(const Eigen::Vector3d& up_b, doub
                                                double step_s)
     : up_b_(up_b.normalized()), max_delay_s_(max_delay_s), step_s_(step_s) {
   const auto lags = static_cast<std::size_t>(std::lround(2.0 * max_delay_s_ / step_s_)) + 1;
+  for (std::size_t k = 0; k < lags; ++k) delays_.push_back(-max_delay_s_ + double(k) * step_s_);
   sum_x_.assign(lags, 0.0);
   sum_xx_.assign(lags, 0.0);
   sum_xw_.assign(lags, 0.0);
@@ -68,32 +69,34 @@ bool OdometerDelayEstimator::anglesAt(const std::vector<Rate>& samples, double t
                                       std::vector<double>& angles) const {
   angles.resize(sum_x_.size());
   if (samples.size() < 2 || angles.empty()) return false;
-  // Locals: a store into `angles` could otherwise alias the members, reloaded every candidate.
-  const double max_delay = max_delay_s_, step = step_s_;
+  // Locals: a store into `angles` could otherwise alias the members, reloaded every candidate;
+  // the candidates from delays_, the same doubles the grid formula gives.
   const Rate* g = samples.data();
   const std::size_t n = samples.size();
   double* out = angles.data();
-  const auto time = [&](std::size_t k) { return t - (-max_delay + static_cast<double>(k) * step); };
+  const double* d = delays_.data();
   // The largest delay first: rising times (k d is monotonic in k), so the samples are walked
   // once and the range is checked at its two ends.
-  if (time(angles.size() - 1) < g[0].t || time(0) > g[n - 1].t) return false;
+  if (t - d[angles.size() - 1] < g[0].t || t - d[0] > g[n - 1].t) return false;
+  // The interval's end, while there is a later one: a candidate at or after it moves on (rarely:
+  // several candidates share an interval), so each candidate costs one comparison.
   std::size_t at = 0;
-  double slope = 0.0;
-  bool interval_known = false;
+  double next_t = -INFINITY, a_t = 0.0, a_angle = 0.0, a_rate = 0.0, slope = 0.0;
   for (std::size_t k = angles.size(); k-- > 0;) {
-    const double tk = time(k);
-    // The last sample at or before tk (the one before the last at the end).
-    const std::size_t before = at;
-    while (at + 2 < n && g[at + 1].t <= tk) ++at;
-    const Rate &a = g[at], &b = g[at + 1];
-    if (!interval_known || at != before) {
+    const double tk = t - d[k];
+    if (next_t <= tk) {
+      while (at + 2 < n && g[at + 1].t <= tk) ++at;
+      const Rate &a = g[at], &b = g[at + 1];
       if (b.t - a.t > 0.1) return false;  // an IMU gap
       // The rate is linear between samples: its integral is quadratic.
       slope = b.t > a.t ? (b.rate - a.rate) / (b.t - a.t) : 0.0;
-      interval_known = true;
+      a_t = a.t;
+      a_angle = a.angle;
+      a_rate = a.rate;
+      next_t = at + 2 < n ? b.t : INFINITY;
     }
-    const double h = tk - a.t;
-    out[k] = a.angle + a.rate * h + 0.5 * slope * h * h;
+    const double h = tk - a_t;
+    out[k] = a_angle + a_rate * h + 0.5 * slope * h * h;
   }
   return true;
 }

@@ -56,8 +56,9 @@ class OdometerDelayEstimator {
 
   Eigen::Vector3d up_b_;
   double max_delay_s_, step_s_;
-  RingQueue<Rate> gyro_;      // a ring: a deque allocated a block every few hundred samples
-  std::vector<Rate> window_;  // the samples one comparison reads, contiguous
+  std::vector<double> delays_;  // the candidates, -max_delay_s_ + k step_s_
+  RingQueue<Rate> gyro_;        // a ring: a deque allocated a block every few hundred samples
+  std::vector<Rate> window_;    // the samples one comparison reads, contiguous
   // The angles at the end of the last compared block: blocks follow each other, so they are the
   // next block's start angles.
   std::vector<double> start_, end_;
