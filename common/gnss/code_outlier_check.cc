@@ -9,12 +9,8 @@
 namespace giocal {
 
 std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
-  struct Candidate {
-    Key key;
-    double P, range_rate, jump;
-    bool tracked;
-  };
-  std::vector<Candidate> cands;
+  std::vector<Candidate>& cands = cands_;
+  cands.clear();
   for (const SatObs& so : epoch.sats) {
     for (const SignalObs& s : so.signals) {
       if (!std::isfinite(s.P) || !std::isfinite(s.D)) continue;
@@ -39,7 +35,8 @@ std::set<CodeOutlierCheck::Key> CodeOutlierCheck::check(const ObsEpoch& epoch) {
                           [](const Candidate& a, const Candidate& b) { return a.key == b.key; }),
               cands.end());
   // The receiver clock moves every pseudo-range alike: take the median jump as common.
-  std::vector<double> jumps;
+  std::vector<double>& jumps = jumps_;
+  jumps.clear();
   for (const Candidate& c : cands) {
     if (c.tracked) jumps.push_back(c.jump);
   }

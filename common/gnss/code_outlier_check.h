@@ -34,8 +34,16 @@ class CodeOutlierCheck {
     double range_rate = 0.0;
     int rejected_in_row = 0;
   };
+  struct Candidate {
+    Key key;
+    double P, range_rate, jump;
+    bool tracked;
+  };
   CodeOutlierOptions options_;
   std::vector<std::pair<Key, Track>> tracks_, next_;  // sorted by key
+  // One epoch's signals and their jumps: kept, so that an epoch allocates nothing.
+  std::vector<Candidate> cands_;
+  std::vector<double> jumps_;
 };
 
 }  // namespace giocal

@@ -1,7 +1,9 @@
 #include "common/gnss/cycle_slip.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 #include "common/math/median.h"
@@ -44,12 +46,17 @@ void CycleSlipDetector::update(const ObsEpoch& epoch) {
   next_.clear();
   for (const SatObs& so : epoch.sats) {
     const SignalObs* prim = so.bestOnBand(primaryBand(so.sat.sys));
-    std::vector<char> bands;
+    // The bands with a phase, in order of first appearance (a fixed array: a vector here was an
+    // allocation per satellite and epoch).
+    std::array<char, 16> band_list{};
+    std::size_t nb = 0;
     for (const SignalObs& s : so.signals) {
-      if (!std::isnan(s.L) && std::find(bands.begin(), bands.end(), s.band) == bands.end()) {
-        bands.push_back(s.band);
+      if (!std::isnan(s.L) && nb < band_list.size() &&
+          std::find(band_list.begin(), band_list.begin() + nb, s.band) == band_list.begin() + nb) {
+        band_list[nb++] = s.band;
       }
     }
+    const auto bands = std::basic_string_view<char>(band_list.data(), nb);
     for (char band : bands) {
       const SignalObs* s = so.bestOnBand(band);
       if (!s || std::isnan(s->L)) continue;
