@@ -29,10 +29,7 @@ LtDL factorLtDL(const Eigen::MatrixXd& Qin) {
   return f;
 }
 
-namespace {
-
-// Integer Gauss transformation making |L(i, j)| <= 1/2, recorded as a step of Z.
-void gauss(Eigen::MatrixXd& L, std::vector<ZStep>& steps, int i, int j) {
+void integerGaussStep(Eigen::MatrixXd& L, std::vector<ZStep>& steps, int i, int j) {
   if (std::abs(L(i, j)) < 0.5) return;  // rounds to 0: most calls, without the rounding's cost
   const double mu = std::round(L(i, j));
   if (mu == 0.0) return;
@@ -41,8 +38,8 @@ void gauss(Eigen::MatrixXd& L, std::vector<ZStep>& steps, int i, int j) {
   steps.push_back({i, j, mu});
 }
 
-// Swaps ambiguities j and j+1, updating L and D so that Q stays L^T D L.
-void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, std::vector<ZStep>& steps) {
+void swapAdjacent(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del,
+                  std::vector<ZStep>& steps) {
   const int n = static_cast<int>(L.rows());
   const double eta = D[j] / del, lam = D[j + 1] * L(j + 1, j) / del;
   D[j] = eta * D[j + 1];
@@ -56,6 +53,8 @@ void permute(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del, std::vec
   for (int k = j + 2; k < n; ++k) std::swap(L(k, j), L(k, j + 1));
   steps.push_back({-1, j, 0.0});
 }
+
+namespace {
 
 double sgn(double x) { return x <= 0.0 ? -1.0 : 1.0; }
 
@@ -108,13 +107,16 @@ Decorrelation decorrelate(const Eigen::MatrixXd& Q) {
   int j = n - 2, k = n - 2;
   while (j >= 0) {
     if (j <= k) {
-      for (int i = j + 1; i < n; ++i) gauss(L, d.steps, i, j);
+      for (int i = j + 1; i < n; ++i) integerGaussStep(L, d.steps, i, j);
     }
     const double del = D[j] + L(j + 1, j) * L(j + 1, j) * D[j + 1];
     if (del + 1e-6 < D[j + 1]) {
-      permute(L, D, j, del, d.steps);
+      swapAdjacent(L, D, j, del, d.steps);
       k = j;
-      j = n - 2;
+      // The classic reduction starts again at n - 2, but a swap at j changes no D or L term of
+      // the tests above j + 1, which all passed on the way down: the walk would test them again
+      // and do nothing (no transformation above k), so it resumes at j + 1, the same steps.
+      j = std::min(j + 1, n - 2);
     } else {
       --j;
     }

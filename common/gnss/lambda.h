@@ -38,6 +38,12 @@ struct Decorrelation {
   /// Z itself, formed from the steps (for checks).
   Eigen::MatrixXd Z() const;
 };
+/// The reduction's two elementary operations on Q = L^T diag(D) L, each recorded as a step of Z:
+/// an integer Gauss transformation making |L(i, j)| <= 1/2 (none when it rounds to 0), and the
+/// swap of ambiguities j and j + 1 (del: the new D[j + 1], D[j] + L(j + 1, j)^2 D[j + 1]).
+void integerGaussStep(Eigen::MatrixXd& L, std::vector<ZStep>& steps, int i, int j);
+void swapAdjacent(Eigen::MatrixXd& L, Eigen::VectorXd& D, int j, double del,
+                  std::vector<ZStep>& steps);
 Decorrelation decorrelate(const Eigen::MatrixXd& Q);
 
 /// The m integer vectors closest to `a` in the metric of Q (ascending squared norms).

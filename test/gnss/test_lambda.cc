@@ -92,6 +92,53 @@ TEST(Lambda, ZTransformIsUnimodularAndDecorrelates) {
   }
 }
 
+// The classic reduction (de Jonge & Tiberius 1996, as RTKLIB's LD/reduction): after every swap
+// it starts its walk again at n - 2: the test's oracle for decorrelate()'s loop, which resumes at
+// j + 1 (the elementary steps are the library's).
+Decorrelation classicReduction(const Eigen::MatrixXd& Q) {
+  const int n = static_cast<int>(Q.rows());
+  Decorrelation d{{}, factorLtDL(Q)};
+  Eigen::MatrixXd& L = d.ltdl.L;
+  Eigen::VectorXd& D = d.ltdl.D;
+  int j = n - 2, k = n - 2;
+  while (j >= 0) {
+    if (j <= k) {
+      for (int i = j + 1; i < n; ++i) integerGaussStep(L, d.steps, i, j);
+    }
+    const double del = D[j] + L(j + 1, j) * L(j + 1, j) * D[j + 1];
+    if (del + 1e-6 < D[j + 1]) {
+      swapAdjacent(L, D, j, del, d.steps);
+      k = j;
+      j = n - 2;
+    } else {
+      --j;
+    }
+  }
+  return d;
+}
+
+TEST(Lambda, ResumingAfterASwapTakesTheClassicReductionsSteps) {
+  // decorrelate() skips the classic walk's re-tests above a swap; the steps, L and D must be
+  // the classic ones exactly, on problems that swap many times (40 ambiguities).
+  std::mt19937 rng(7);
+  size_t swaps = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 2 + (trial * 7) % 39;
+    const Eigen::MatrixXd Q = randomCovariance(rng, n);
+    const Decorrelation fast = decorrelate(Q), classic = classicReduction(Q);
+    ASSERT_EQ(fast.steps.size(), classic.steps.size()) << "n " << n;
+    for (size_t s = 0; s < fast.steps.size(); ++s) {
+      EXPECT_EQ(fast.steps[s].i, classic.steps[s].i);
+      EXPECT_EQ(fast.steps[s].j, classic.steps[s].j);
+      EXPECT_EQ(fast.steps[s].mu, classic.steps[s].mu);
+      swaps += classic.steps[s].i < 0;
+    }
+    EXPECT_EQ((fast.ltdl.L - classic.ltdl.L).norm(), 0.0);
+    EXPECT_EQ((fast.ltdl.D - classic.ltdl.D).norm(), 0.0);
+  }
+  EXPECT_GT(swaps, 200u);
+}
+
 TEST(Lambda, SearchEqualsBruteForceOnRandomProblems) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-20.0, 20.0);
