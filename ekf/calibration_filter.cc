@@ -171,7 +171,7 @@ void CalibrationFilter::feedMotion(double t) {
   motion_fed_t_ = std::max(motion_fed_t_, t);
 }
 
-const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
+const ImuPreintegration& CalibrationFilter::pendingTo(double t, bool with_covariance) {
   if (!pending_) {
     const NavState x = navState(s_);
     pending_.emplace(dataset_.imu_noise, frame_.gravity_n(x.p_n_b), frame_.omega_ie_n(), x.b_a,
@@ -179,9 +179,10 @@ const ImuPreintegration& CalibrationFilter::pendingTo(double t) {
     pending_t_ = t_;
   }
   if (t > pending_t_) {
-    pending_->integrateSamples(imu_, pending_t_, t);
+    pending_->addSamples(imu_, pending_t_, t);
     pending_t_ = t;
   }
+  if (with_covariance) pending_->closeCovariance();
   return *pending_;
 }
 
@@ -189,7 +190,7 @@ double CalibrationFilter::propagateTo(double t) {
   t = std::min(t, imu_.back().t);
   if (t <= t_) return 0.0;
   feedMotion(t);
-  const ImuPreintegration& pre = pendingTo(t);
+  const ImuPreintegration& pre = pendingTo(t, true);
   double gap = 0.0, t_prev = t_;  // the longest IMU gap crossed
   auto it = std::upper_bound(imu_.begin(), imu_.end(), t_,
                              [](double v, const ImuSample& s) { return v < s.t; });

@@ -140,8 +140,9 @@ class CalibrationFilter {
   UpdateResult updateInterval(double t);
   void feedMotion(double t);  // bias-compensated IMU samples up to t into the motion detector
   /// The IMU preintegrated from time() to t; each sample is integrated once however often it
-  /// is asked for (trajectory output, then the next update).
-  const ImuPreintegration& pendingTo(double t);
+  /// is asked for (trajectory output, then the next update). Its covariance is complete only
+  /// with_covariance (an update's propagation); a trajectory row reads the mean alone.
+  const ImuPreintegration& pendingTo(double t, bool with_covariance);
   void restartOdometerInterval(const OdomSample& sample);
 
   CalibrationOptions options_;

@@ -1,5 +1,8 @@
 // CalibrationFilter's navigation read-out and reset: the state now, the trajectory predicted
 // between updates, and moving the pose to a reference (dead reckoning's start).
+#include <algorithm>
+#include <iterator>
+
 #include "common/math/rotation.h"
 #include "ekf/calibration_filter.h"
 #include "ekf/imu_propagation.h"
@@ -16,7 +19,23 @@ TruthSample CalibrationFilter::trajectorySample(double t) {
   NavState x = nav();
   t = std::min(t, imu_.back().t);
   if (t > t_) {
-    x = pendingTo(t).predict(x);  // mean prediction; the covariance moves at the next update
+    // A row leaves the filter as it was: the whole IMU intervals up to t go into the pending
+    // preintegration (the mean only; each sample is integrated once, and the covariance steps
+    // close where they would without rows), the piece of the last one up to t into a copy.
+    // Closing a step at every row, or cutting an interval there, moved the calibration at
+    // rounding level with the output rate.
+    const auto after = std::upper_bound(imu_.begin(), imu_.end(), t,
+                                        [](double v, const ImuSample& s) { return v < s.t; });
+    const double t_whole = std::prev(after)->t;  // imu_.front().t <= t_ < t
+    const ImuPreintegration& pre = pendingTo(std::max(t_whole, t_), false);
+    if (t > pending_t_) {
+      ImuPreintegration piece = pre;
+      piece.meanOnly();
+      piece.addSamples(imu_, pending_t_, t);
+      x = piece.predict(x);
+    } else {
+      x = pre.predict(x);
+    }
   } else {
     t = t_;
   }

@@ -176,12 +176,14 @@ std::optional<GyroTilt> FactorGraphCore::gyroTilt() const {
 
 void FactorGraphCore::outputTrajectory(const FgoEpoch& from, const FgoEpoch& to) {
   const NavState x0 = nav(from);
-  // One preintegration from `from`, continued to each output time (not restarted per output).
+  // One preintegration from `from`, continued to each output time (not restarted per output);
+  // its mean only, as a trajectory row needs no covariance.
   ImuPreintegration pre(in_.description.imu_noise, frame_.gravity_n(x0.p_n_b), frame_.omega_ie_n(),
                         x0.b_a, x0.b_g, gyroTilt());
+  pre.meanOnly();
   double integrated_to = from.t;
   while (next_output_ <= to.t + 1e-9) {
-    if (next_output_ > integrated_to) pre.integrateSamples(in_.imu, integrated_to, next_output_);
+    if (next_output_ > integrated_to) pre.addSamples(in_.imu, integrated_to, next_output_);
     integrated_to = std::max(integrated_to, next_output_);
     const NavState x = next_output_ > from.t ? pre.predict(x0) : x0;
     trajectory_.push_back(truthRow(frame_, x, std::max(next_output_, from.t)));

@@ -154,7 +154,7 @@ void ImuPreintegration::addStep(const Step& s) {
 
 void ImuPreintegration::advanceCovariance() {
   PendingCovariance& c = pending_;
-  if (c.samples == 0) return;
+  if (c.samples == 0 || mean_only_) return;
   const double dt = c.dt, dt2 = dt * dt;
   // One sample keeps its own terms (bit for bit what a step per sample gives); several enter as
   // one step at their mean rate and specific force, their extra noise weighted by duration.
@@ -219,6 +219,12 @@ void ImuPreintegration::advanceCovariance() {
 
 void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, double t0,
                                          double t1, const ImuBridgeModel& bridge) {
+  addSamples(samples, t0, t1, bridge);
+  advanceCovariance();
+}
+
+void ImuPreintegration::addSamples(const std::vector<ImuSample>& samples, double t0, double t1,
+                                   const ImuBridgeModel& bridge) {
   if (!(t1 > t0)) throw std::invalid_argument("ImuPreintegration: needs t1 > t0");
   auto interp = [&](size_t k, double t) {
     const ImuSample& s0 = samples[k];
@@ -257,7 +263,6 @@ void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, 
                   bridge.angular_accel * grow, bridge.jerk * grow});
     }
   }
-  advanceCovariance();
 }
 
 Mat3 ImuPreintegration::correctedDeltaR(const Eigen::Vector3d& b_g,
