@@ -5,7 +5,7 @@
 // did that epoch's work and counts for the epoch; the others count for their sample. The first
 // third of the drive (initialization, the first windows) is left out. Prints the mean and the
 // largest count per kind, per estimator.
-// With --where: also where the IMU and odometer samples' allocations come from (the EKF's), as
+// With --where: also where the IMU and odometer samples' allocations come from, per estimator, as
 // the most frequent call stacks (symbols need the -rdynamic this target is linked with).
 // Usage: giocal_allocations [--preset config/sim/paper.yaml] [--seed N] [--where]
 #include <execinfo.h>
@@ -181,7 +181,7 @@ int main(int argc, char** argv) {
   for (const char* est : {"ekf", "fgo"}) {
     auto c = makeCalibrator(est, in.description, in.base_e, CalibrationOptions{}, {}, nullptr);
     c->addNavigation(in.nav);
-    const Tallies t = feed(in, *c, steady_from, where && std::strcmp(est, "ekf") == 0);
+    const Tallies t = feed(in, *c, steady_from, where);
     c->finish();
     for (const auto& [name, tally] : {std::pair<const char*, const Tally&>{"IMU sample", t.imu},
                                       {"odometer sample", t.odom},

@@ -12,7 +12,6 @@
 
 #include <array>
 #include <chrono>
-#include <deque>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -25,6 +24,7 @@
 #include "common/calibration/calibration_run.h"
 #include "common/calibration/initial_state.h"
 #include "common/calibration/odometer_delay.h"
+#include "common/containers/ring_queue.h"
 #include "common/gnss/broadcast_orbits.h"
 #include "common/gnss/phase_alignment.h"
 #include "common/gnss/tdcp_track.h"
@@ -152,7 +152,7 @@ class Calibrator {
   CalibrationInputs buf_;  // buffered samples and ephemerides (bounded)
   std::unique_ptr<BroadcastOrbits> orbits_;
   std::unique_ptr<TdcpTrack> track_;  // the single-receiver scheme's track for the initial state
-  std::deque<ObsEpoch> rover_;        // rover epochs not yet processed
+  RingQueue<ObsEpoch> rover_;         // rover epochs not yet processed
   // Each receiver's phases of one band checked for alignment as they come (a file's reader has
   // done it for the whole file; a driver's raw epochs have not).
   PhaseAlignment rover_phases_, base_phases_;

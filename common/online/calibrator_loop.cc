@@ -61,7 +61,8 @@ bool Calibrator::tryInitialize() {
       std::find_if(epochs.begin(), epochs.end(), [&](const ObsEpoch& e) { return e.t >= t_from_; });
   epochs.erase(epochs.begin(), stale);
   const double newest = epochs.empty() ? -INFINITY : epochs.back().t;
-  for (const ObsEpoch& e : rover_) {
+  for (size_t k = 0; k < rover_.size(); ++k) {
+    const ObsEpoch& e = rover_[k];
     if (!ready(e.t) || e.t > buf_.imu.back().t) break;
     if (e.t >= t_from_ && e.t > newest) epochs.push_back(e);
   }
@@ -178,7 +179,7 @@ void Calibrator::dispatchRover(const ObsEpoch& rover) {
     t_from_ = rover.t;
     last_init_try_ = -INFINITY;
     skip_rover_until_ = rover.t;
-    rover_.push_front(rover);
+    rover_.insert(0, rover);
     return;
   }
   if (out.used) {
