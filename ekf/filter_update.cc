@@ -75,7 +75,9 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
   if (iterations <= 1)
     return updateLinearized(linearizeRows(model, keys, gyro_variance), chi2_gate);
   // Iterated EKF (Gauss-Newton on the prior and the measurement): relinearize at the updated
-  // state, keep the prior covariance; the last iteration's gain updates the covariance.
+  // state, keep the prior covariance; the last iteration's gain updates the covariance. The
+  // covariance is left as the prior's until then: an earlier iteration gives its correction
+  // only (the downdates it made and the copies that undid them were a third of the update).
   // Assigned, not constructed: the copy reuses the storage of the last update's (a registry
   // constructed here allocated once per variable, about 55 times per odometer interval).
   iterate_prior_ = s_;
@@ -86,16 +88,19 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     s_.minus(prior, delta_);
     h_delta_.noalias() = lin.H * delta_;
     lin.residual -= h_delta_;  // residual linearized about the prior: r(x_i) - H d_i
-    // Values and covariance back to the prior's, then updated in place (whole-registry copies
-    // per iteration cost more than the update itself).
-    s_.setValues(prior);
-    s_.covariance() = prior.covariance();
-    kalmanUpdateInto(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
-                     workspace_, r);
+    s_.setValues(prior);  // values back to the prior's (whole-registry copies cost more)
+    kalmanGainInto(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
+                   workspace_, r);
     numerical_failures_ += r.numerical_failure;
     if (!r.accepted) return outcome(r);  // s_ holds the prior again
+    const bool last = it + 1 == iterations || (r.dx - delta_).norm() < 1e-9;
+    if (last) {
+      kalmanDowndate(s_.covariance(), heldIndices(), workspace_, r);
+      numerical_failures_ += r.numerical_failure;
+      if (!r.accepted) return outcome(r);  // the covariance is restored, s_ holds the prior
+    }
     s_.correct(r.dx);
-    if ((r.dx - delta_).norm() < 1e-9) break;
+    if (last) break;
   }
   return outcome(r);
 }

@@ -24,6 +24,12 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
 
 void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
                       const std::vector<int>& held, KalmanWorkspace& ws, UpdateResult& out) {
+  kalmanGainInto(P, rows, chi2_gate, held, ws, out);
+  if (out.accepted) kalmanDowndate(P, held, ws, out);
+}
+
+void kalmanGainInto(const Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
+                    const std::vector<int>& held, KalmanWorkspace& ws, UpdateResult& out) {
   out.nis = 0.0;
   out.accepted = false;
   out.numerical_failure = false;
@@ -54,12 +60,22 @@ void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double ch
   if (!(out.nis <= chi2_gate)) return;
   out.dx.noalias() = PHt * s_innovation;  // K0 v, K0 = P H^T S^-1 never formed
   for (int i : held) out.dx[i] = 0.0;
+  ws.gain_rows = m;
+  out.accepted = true;
+}
+
+void kalmanDowndate(Eigen::MatrixXd& P, const std::vector<int>& held, KalmanWorkspace& ws,
+                    UpdateResult& out) {
+  const Eigen::Index n = P.rows(), m = ws.gain_rows;
+  // What kalmanGainInto left: W = (P H^T)^T and S's Cholesky factor in S's lower triangle.
+  Eigen::Map<Eigen::MatrixXd> W = ws.matrix(KalmanWorkspace::kW, m, n);
+  const Eigen::Map<Eigen::MatrixXd> S = ws.matrix(KalmanWorkspace::kS, m, m);
   // Joseph form (I-KH) P (I-KH)^T + K R K^T with the optimal gain K0 = PH^T S^-1 and K = D K0,
   // D the mask of the states that are not held: with M = K0 S K0^T = K0 (PH^T)^T it expands to
   // P - D M - M D + D M D, which is P - M except on the held x held block, where it is P.
   // M = W^T W with W = L^-1 (PH^T)^T (S = L L^T): one triangular solve and a symmetric rank-m
   // update of P's lower triangle, half the work of forming K0 and K0 (PH^T)^T.
-  llt.matrixL().solveInPlace(W);
+  S.triangularView<Eigen::Lower>().solveInPlace(W);
   // The downdate in floating point can overshoot a variance the update nearly zeroes: checked
   // on the diagonal, and undone (from this copy) rather than kept.
   Eigen::Map<Eigen::MatrixXd> P_before = ws.matrix(KalmanWorkspace::kPBefore, n, n);
@@ -78,9 +94,8 @@ void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double ch
   if (overshot || !P.diagonal().allFinite()) {
     P = P_before;
     out.numerical_failure = true;
-    return;
+    out.accepted = false;
   }
-  out.accepted = true;
 }
 
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows) {

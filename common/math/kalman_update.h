@@ -31,6 +31,16 @@ UpdateResult kalmanUpdate(Eigen::MatrixXd& P, const MeasurementRows& rows, doubl
 void kalmanUpdateInto(Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
                       const std::vector<int>& held, KalmanWorkspace& workspace, UpdateResult& out);
 
+/// The update in two halves, for an iterated update whose intermediate covariances are not
+/// kept: kalmanGainInto() leaves P as it is and gives the correction and NIS (out.accepted when
+/// it passes the gate and S is positive definite); kalmanDowndate() then applies the covariance
+/// downdate of that same gain, from what the gain left in `workspace` (nothing else may use the
+/// workspace in between). Together they are kalmanUpdateInto(), to the bit.
+void kalmanGainInto(const Eigen::MatrixXd& P, const MeasurementRows& rows, double chi2_gate,
+                    const std::vector<int>& held, KalmanWorkspace& workspace, UpdateResult& out);
+void kalmanDowndate(Eigen::MatrixXd& P, const std::vector<int>& held, KalmanWorkspace& workspace,
+                    UpdateResult& out);
+
 /// |innovation| / sqrt(S_ii) of every row, S = H P H^T + R: the per-row outlier test.
 Eigen::VectorXd normalizedInnovations(const Eigen::MatrixXd& P, const MeasurementRows& rows);
 

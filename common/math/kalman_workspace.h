@@ -16,6 +16,7 @@ namespace giocal {
 class KalmanWorkspace {
  public:
   enum Slot : std::size_t { kPHt, kS, kW, kPBefore, kInnovation, kSInnovation, kPHeld, kSlots };
+  Eigen::Index gain_rows = 0;  // the rows of the last kalmanGainInto (its W and S factor)
   /// A rows x cols matrix over the slot's buffer; its coefficients are unspecified.
   Eigen::Map<Eigen::MatrixXd> matrix(Slot slot, Eigen::Index rows, Eigen::Index cols) {
     std::vector<double>& b = buffers_[slot];
