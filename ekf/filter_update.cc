@@ -88,9 +88,9 @@ UpdateResult CalibrationFilter::update(const MeasurementModel& model,
     s_.minus(prior, delta_);
     h_delta_.noalias() = lin.H * delta_;
     lin.residual -= h_delta_;  // residual linearized about the prior: r(x_i) - H d_i
-    s_.setValues(prior);  // values back to the prior's (whole-registry copies cost more)
-    kalmanGainInto(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(),
-                   workspace_, r);
+    s_.setValues(prior);       // values back to the prior's (whole-registry copies cost more)
+    kalmanGainInto(s_.covariance(), lin, it == 0 ? chi2_gate : INFINITY, heldIndices(), workspace_,
+                   r);
     numerical_failures_ += r.numerical_failure;
     if (!r.accepted) return outcome(r);  // s_ holds the prior again
     const bool last = it + 1 == iterations || (r.dx - delta_).norm() < 1e-9;

@@ -102,7 +102,7 @@ void ImuPreintegration::integrate(double dt, const Eigen::Vector3d& gyro,
   const Step s{dt, gyro, acc, extra_gyro_density, extra_accel_density};
   checkStep(s);
   addStep(s);
-  advanceCovariance();
+  closeCovariance();
 }
 
 void ImuPreintegration::addChecked(const Step& s) {
@@ -149,10 +149,10 @@ void ImuPreintegration::addStep(const Step& s) {
   dv_ += dv_step;
   dR_ = normalizeRotation(dR_ * E);
   dt_sum_ += dt;
-  if (c.dt >= kCovarianceStep_s - 1e-9) advanceCovariance();
+  if (c.dt >= kCovarianceStep_s - 1e-9) closeCovariance();
 }
 
-void ImuPreintegration::advanceCovariance() {
+void ImuPreintegration::closeCovariance() {
   PendingCovariance& c = pending_;
   if (c.samples == 0 || mean_only_) return;
   const double dt = c.dt, dt2 = dt * dt;
@@ -220,7 +220,7 @@ void ImuPreintegration::advanceCovariance() {
 void ImuPreintegration::integrateSamples(const std::vector<ImuSample>& samples, double t0,
                                          double t1, const ImuBridgeModel& bridge) {
   addSamples(samples, t0, t1, bridge);
-  advanceCovariance();
+  closeCovariance();
 }
 
 void ImuPreintegration::addSamples(const std::vector<ImuSample>& samples, double t0, double t1,

@@ -83,7 +83,7 @@ class ImuPreintegration {
                   const ImuBridgeModel& bridge = {});
   /// Closes the open covariance step: covariance(), biasJacobian() and tiltJacobian() then hold
   /// every sample added (integrate() and integrateSamples() close it themselves).
-  void closeCovariance() { advanceCovariance(); }
+  void closeCovariance();
   /// From here on the deltas only, for predict() at the linearization point's biases (a
   /// trajectory row): covariance(), biasJacobian() and tiltJacobian() stay at their last step.
   void meanOnly() { mean_only_ = true; }
@@ -156,7 +156,6 @@ class ImuPreintegration {
   static void checkStep(const Step& s);
   void addChecked(const Step& s);  // checkStep, then addStep
   void addStep(const Step& s);
-  void advanceCovariance();  // the pending samples into cov_, J_bias_ and J_tilt_
   /// A translational delta (rows `row` of the Jacobians) corrected to first order.
   Vec3 corrected(int row, const Vec3& delta, const Eigen::Vector3d& b_a, const Eigen::Vector3d& b_g,
                  const std::optional<GyroTilt>& tilt) const;

@@ -240,5 +240,54 @@ TEST(KalmanUpdate, NumericalFailuresAreToldApartFromRejectionsAndLeavePUnchanged
   EXPECT_FALSE(r.numerical_failure);
 }
 
+// The iterated update's halves: the gain leaves P as it was, and gain then downdate (with
+// another update's use of the workspace in between undone by a new gain) is kalmanUpdateInto to
+// the bit, held states included.
+TEST(KalmanUpdate, GainThenDowndateIsTheWholeUpdateToTheBit) {
+  const Eigen::MatrixXd P0 = spd(7, 0.3);
+  MeasurementRows rows;
+  rows.H = Eigen::MatrixXd::Random(3, 7);
+  rows.H.col(4).setZero();  // a column no row touches, as in a long state
+  rows.residual = Eigen::Vector3d(0.2, -0.4, 0.1);
+  rows.R = Eigen::Matrix3d::Identity() * 0.02;
+  const std::vector<int> held{5};
+  Eigen::MatrixXd P_whole = P0;
+  KalmanWorkspace ws_whole;
+  UpdateResult whole;
+  kalmanUpdateInto(P_whole, rows, 1e9, held, ws_whole, whole);
+  ASSERT_TRUE(whole.accepted);
+  // Both are checked against the dense form too (a fault shared by both would pass the above):
+  // P - K0 S K0^T, the held x held block kept.
+  const Eigen::MatrixXd S = rows.H * P0 * rows.H.transpose() + rows.R;
+  const Eigen::MatrixXd K0 = P0 * rows.H.transpose() * S.inverse();
+  Eigen::MatrixXd dense = P0 - K0 * S * K0.transpose();
+  dense(5, 5) = P0(5, 5);
+  EXPECT_LT((P_whole - dense).norm(), 1e-12);
+
+  Eigen::MatrixXd P = P0;
+  KalmanWorkspace ws;
+  UpdateResult halves;
+  MeasurementRows other;  // an earlier iteration's gain, at other rows (fewer of them)
+  other.H = 2.0 * rows.H.topRows(2);
+  other.residual = rows.residual.head(2);
+  other.R = rows.R.topLeftCorner(2, 2);
+  kalmanGainInto(P, other, 1e9, held, ws, halves);
+  ASSERT_TRUE(halves.accepted);
+  EXPECT_EQ(P, P0);  // the gain alone leaves P
+  EXPECT_FALSE(halves.dx.isApprox(whole.dx));
+  kalmanGainInto(P, rows, 1e9, held, ws, halves);
+  ASSERT_TRUE(halves.accepted);
+  EXPECT_EQ(P, P0);
+  EXPECT_EQ(halves.dx, whole.dx);
+  EXPECT_EQ(halves.nis, whole.nis);
+  kalmanDowndate(P, held, ws, halves);
+  EXPECT_TRUE(halves.accepted);
+  EXPECT_EQ(P, P_whole);
+  // A gated gain is refused and leaves P.
+  kalmanGainInto(P, rows, 1e-6, held, ws, halves);
+  EXPECT_FALSE(halves.accepted);
+  EXPECT_FALSE(halves.numerical_failure);
+}
+
 }  // namespace
 }  // namespace giocal
