@@ -2,8 +2,8 @@
 # The heap allocations the calibrator makes per sample (bench/allocations.cc, paper preset seed 1,
 # steady state): both estimators allocate nothing per odometer sample; per IMU sample the EKF
 # allocates nothing either (since the queue of released rover epochs is a RingQueue, not a
-# std::deque that took a block every ten epochs), the factor graph at most one (a buffer growing
-# inside Calibrator::release, once in 9901 samples; mean 0.0). Before the EKF kept its clones in
+# std::deque that took a block every ten epochs), the factor graph at most one (inside
+# Calibrator::release, once in 9901 samples; mean 0.0). Before the EKF kept its clones in
 # place and its linearization storage per kind of model: 0.2 per IMU sample, 22 at the most.
 # usage: test_allocations.sh <giocal_allocations>
 set -euo pipefail
